@@ -1,0 +1,242 @@
+// `swarmcheck fsm ...`: each subcommand reads its .fsm files, runs one operation on the chosen
+// engine (impl by default; model, the reference, on request) and prints a summary, as text or
+// JSON. Output files are written whole or not at all (temporary file + rename).
+#include "apps/swarmcheck/fsm_verb.hpp"
+
+#include <fmt/format.h>
+
+#include <memory>
+#include <nlohmann/json.hpp>
+
+#include "apps/swarmcheck/verb.hpp"
+#include "impl/supervisor/fsm_export.hpp"
+#include "impl/supervisor/fsm_io.hpp"
+#include "impl/supervisor/operations.hpp"
+#include "model/supervisor/operations.hpp"
+
+namespace swarmcheck::cli {
+
+namespace {
+
+namespace impl = swarmcheck::impl::supervisor;
+namespace model = swarmcheck::model::supervisor;
+using spec::supervisor::Automaton;
+using Json = nlohmann::ordered_json;
+
+struct FsmOptions {
+  std::vector<std::string> files;
+  std::vector<std::string> plants, specs;
+  std::string out;
+  std::string to = "fsm";
+  std::string engine = "impl";
+  bool json = false;
+};
+
+void print_json(const Json& j) { fmt::print("{}\n", j.dump(2)); }
+
+std::vector<Automaton> read_all(const std::vector<std::string>& paths) {
+  std::vector<Automaton> out;
+  for (const auto& p : paths) out.push_back(impl::read_fsm_file(p));
+  return out;
+}
+
+Automaton product_of(const std::vector<Automaton>& parts, const std::vector<std::string>& names,
+                     const std::string& engine) {
+  if (engine == "model") return model::product(parts, names);
+  std::vector<impl::Fsm> compiled;
+  for (const auto& a : parts) compiled.push_back(impl::compile(a));
+  std::vector<const impl::Fsm*> ptrs;
+  for (const auto& f : compiled) ptrs.push_back(&f);
+  return impl::decompile(impl::product(ptrs, names));
+}
+
+int run_check(const FsmOptions& o) {
+  const Automaton a = impl::read_fsm_file(o.files.front());
+  std::vector<std::string> blocking, unreachable;
+  if (o.engine == "model") {
+    blocking = model::blocking_states(a);
+    const auto ac = model::accessible_states(a);
+    for (const auto& q : a.states)
+      if (!ac.count(q)) unreachable.push_back(q);
+  } else {
+    const impl::Fsm f = impl::compile(a);
+    for (const auto s : impl::blocking_states(f)) blocking.push_back(f.state_names[s]);
+    const auto ac = impl::accessible_mask(f);
+    for (impl::StateId s = 0; s < f.state_count(); ++s)
+      if (!ac[s]) unreachable.push_back(f.state_names[s]);
+  }
+  const auto coac = model::coaccessible_states(a);
+  const bool coaccessible = coac.size() == a.states.size();
+  std::size_t controllable = 0;
+  for (const auto& [e, attr] : a.events) controllable += attr.controllable ? 1 : 0;
+  const bool nonblocking = blocking.empty();
+  if (o.json) {
+    print_json({{"file", o.files.front()},
+                {"states", a.states.size()},
+                {"initial", a.states.empty() ? Json(nullptr) : Json(a.states.front())},
+                {"marked", a.marked.size()},
+                {"events", a.events.size()},
+                {"controllable_events", controllable},
+                {"transitions", spec::supervisor::transition_count(a)},
+                {"deterministic", true},  // the reader refuses nondeterministic files
+                {"accessible", unreachable.empty()},
+                {"unreachable_states", unreachable},
+                {"coaccessible", coaccessible},
+                {"nonblocking", nonblocking},
+                {"blocking_states", blocking}});
+  } else {
+    fmt::print("{}: {} states ({} marked), {} events ({} controllable), {} transitions\n",
+               o.files.front(), a.states.size(), a.marked.size(), a.events.size(), controllable,
+               spec::supervisor::transition_count(a));
+    fmt::print("deterministic: yes\naccessible: {} ({} unreachable)\ncoaccessible: {}\n",
+               unreachable.empty() ? "yes" : "no", unreachable.size(),
+               coaccessible ? "yes" : "no");
+    fmt::print("nonblocking: {}\n", nonblocking ? "yes" : "no");
+    for (const auto& q : blocking) fmt::print("  blocking state: {}\n", q);
+  }
+  return nonblocking ? 0 : 1;
+}
+
+int run_product(const FsmOptions& o) {
+  const Automaton p = product_of(read_all(o.files), o.files, o.engine);
+  impl::write_file_atomically(o.out, impl::write_fsm(p));
+  if (o.json)
+    print_json({{"output", o.out},
+                {"states", p.states.size()},
+                {"transitions", spec::supervisor::transition_count(p)},
+                {"nonblocking", model::is_nonblocking(p)}});
+  else
+    fmt::print("{}: {} states, {} transitions\n", o.out, p.states.size(),
+               spec::supervisor::transition_count(p));
+  return 0;
+}
+
+int run_synth(const FsmOptions& o) {
+  const Automaton plant = product_of(read_all(o.plants), o.plants, o.engine);
+  const Automaton spec = product_of(read_all(o.specs), o.specs, o.engine);
+  Automaton sup;
+  bool controllable = false;
+  if (o.engine == "model") {
+    sup = model::supcon(plant, spec);
+    controllable = model::is_controllable(plant, spec);
+  } else {
+    const impl::Fsm g = impl::compile(plant), s = impl::compile(spec);
+    sup = impl::decompile(impl::supcon(g, s));
+    controllable = impl::is_controllable(g, s);
+  }
+  impl::write_file_atomically(o.out, impl::write_fsm(sup));
+  const bool empty = sup.states.empty();
+  if (o.json)
+    print_json({{"output", o.out},
+                {"plant_states", plant.states.size()},
+                {"spec_states", spec.states.size()},
+                {"spec_controllable", controllable},
+                {"states", sup.states.size()},
+                {"transitions", spec::supervisor::transition_count(sup)},
+                {"marked", sup.marked.size()},
+                {"empty", empty}});
+  else
+    fmt::print("{}: supervisor of {} states, {} transitions{} (plant {} states, spec {} states, "
+               "spec {}controllable as given)\n",
+               o.out, sup.states.size(), spec::supervisor::transition_count(sup),
+               empty ? " (EMPTY: no controllable nonblocking behaviour exists)" : "",
+               plant.states.size(), spec.states.size(), controllable ? "" : "not ");
+  return 0;
+}
+
+int run_export(const FsmOptions& o) {
+  const Automaton a = impl::read_fsm_file(o.files.front());
+  const std::string text = o.to == "dot"    ? impl::to_dot(a)
+                           : o.to == "json" ? impl::to_json_text(a)
+                                            : impl::write_fsm(a);
+  if (o.out.empty())
+    fmt::print("{}", text);
+  else
+    impl::write_file_atomically(o.out, text);
+  return 0;
+}
+
+Json witness(const std::vector<std::string>& w) { return Json(w); }
+
+int run_compare(const FsmOptions& o) {
+  const Automaton a = impl::read_fsm_file(o.files[0]);
+  const Automaton b = impl::read_fsm_file(o.files[1]);
+  const auto ab = model::language_inclusion(a, b);
+  const auto ba = model::language_inclusion(b, a);
+  if (o.json) {
+    auto side = [](const model::Inclusion& i) {
+      return Json{{"closed", i.closed},
+                  {"marked", i.marked},
+                  {"closed_witness", i.closed ? Json(nullptr) : witness(i.closed_witness)},
+                  {"marked_witness", i.marked ? Json(nullptr) : witness(i.marked_witness)}};
+    };
+    print_json({{"a", {{"file", o.files[0]}, {"states", a.states.size()}}},
+                {"b", {{"file", o.files[1]}, {"states", b.states.size()}}},
+                {"a_in_b", side(ab)},
+                {"b_in_a", side(ba)}});
+  } else {
+    auto line = [](const char* what, const model::Inclusion& i) {
+      fmt::print("{}: L {} (witness: {}), Lm {} (witness: {})\n", what, i.closed ? "yes" : "no",
+                 fmt::join(i.closed_witness, " "), i.marked ? "yes" : "no",
+                 fmt::join(i.marked_witness, " "));
+    };
+    fmt::print("A = {} ({} states), B = {} ({} states)\n", o.files[0], a.states.size(),
+               o.files[1], b.states.size());
+    line("A in B", ab);
+    line("B in A", ba);
+  }
+  return ab.closed && ab.marked && ba.closed && ba.marked ? 0 : 1;
+}
+
+void add_engine(CLI::App* sub, FsmOptions& o) {
+  sub->add_option("--engine", o.engine, "impl (fast, default) or model (the reference)")
+      ->check(CLI::IsMember({"impl", "model"}));
+}
+
+}  // namespace
+
+void add_fsm_verb(CLI::App& app, int& exit_code) {
+  auto* fsm = app.add_subcommand("fsm", "discrete-event automata in UMDES .fsm files");
+  fsm->require_subcommand(1);
+  auto o = std::make_shared<FsmOptions>();
+  auto wire = [&exit_code, o](CLI::App* sub, int (*body)(const FsmOptions&)) {
+    sub->callback([&exit_code, o, body] { exit_code = guarded([&] { return body(*o); }); });
+  };
+
+  auto* check = fsm->add_subcommand(
+      "check", "states, events, accessibility, coaccessibility, blocking states (exit 1 if blocking)");
+  check->add_option("file", o->files, "the .fsm file")->required()->expected(1);
+  check->add_flag("--json", o->json, "print JSON");
+  add_engine(check, *o);
+  wire(check, run_check);
+
+  auto* prod = fsm->add_subcommand("product", "synchronous product (accessible part) of automata");
+  prod->add_option("files", o->files, "two or more .fsm files")->required()->expected(2, -1);
+  prod->add_option("-o,--output", o->out, "the product .fsm to write")->required();
+  prod->add_flag("--json", o->json, "print a JSON summary");
+  add_engine(prod, *o);
+  wire(prod, run_product);
+
+  auto* synth = fsm->add_subcommand(
+      "synth", "supremal controllable nonblocking supervisor of plants for specifications");
+  synth->add_option("--plant", o->plants, "plant component .fsm files")->required()->expected(1, -1);
+  synth->add_option("--spec", o->specs, "specification .fsm files")->required()->expected(1, -1);
+  synth->add_option("-o,--output", o->out, "the supervisor .fsm to write")->required();
+  synth->add_flag("--json", o->json, "print a JSON summary");
+  add_engine(synth, *o);
+  wire(synth, run_synth);
+
+  auto* exp = fsm->add_subcommand("export", "write an automaton as DOT, JSON or canonical .fsm");
+  exp->add_option("file", o->files, "the .fsm file")->required()->expected(1);
+  exp->add_option("--to", o->to, "dot, json or fsm")->check(CLI::IsMember({"dot", "json", "fsm"}));
+  exp->add_option("-o,--output", o->out, "write here instead of standard output");
+  wire(exp, run_export);
+
+  auto* cmp = fsm->add_subcommand(
+      "compare", "language inclusion both ways, with shortest witnesses (exit 1 if not equal)");
+  cmp->add_option("files", o->files, "A.fsm B.fsm")->required()->expected(2);
+  cmp->add_flag("--json", o->json, "print JSON");
+  wire(cmp, run_compare);
+}
+
+}  // namespace swarmcheck::cli

@@ -1,0 +1,31 @@
+#pragma once
+// The automata operations of spec/supervisor/semantics.hpp, fast: worklists over integer ids,
+// an on-the-fly product that only ever builds accessible states, and a supervisor fixpoint that
+// removes states incrementally. Results equal model/supervisor's state for state (same names, same
+// order); the conformance harness checks that.
+#include <string>
+#include <vector>
+
+#include "impl/supervisor/fsm.hpp"
+
+namespace swarmcheck::impl::supervisor {
+
+std::vector<std::uint8_t> accessible_mask(const Fsm& f);
+std::vector<std::uint8_t> coaccessible_mask(const Fsm& f);
+Fsm accessible_part(const Fsm& f);
+Fsm trim(const Fsm& f);
+// Accessible states that cannot reach a marked state, ascending.
+std::vector<StateId> blocking_states(const Fsm& f);
+bool is_nonblocking(const Fsm& f);
+
+// The synchronous product of all parts (accessible part), states named "x1.x2...", in
+// breadth-first order with events in name order. `names` name the parts in error messages.
+// `origin`, when given, receives each product state's tuple of component states.
+Fsm product(const std::vector<const Fsm*>& parts, const std::vector<std::string>& names,
+            std::vector<std::vector<StateId>>* origin = nullptr);
+
+bool is_controllable(const Fsm& plant, const Fsm& spec);
+// The supremal controllable nonblocking supervisor of plant for spec.
+Fsm supcon(const Fsm& plant, const Fsm& spec);
+
+}  // namespace swarmcheck::impl::supervisor
