@@ -1,0 +1,33 @@
+# swarmcheck: the two commands of the README are `make run` and `make test`.
+JOBS ?= $(shell nproc)
+
+.PHONY: deps build run test test-debug bench clean
+
+deps:
+	@scripts/install-deps
+
+build: deps
+	@cmake --preset release >/dev/null
+	@cmake --build --preset release -j $(JOBS)
+
+run: build
+	build/bin/swarmcheck run
+
+test: build
+	ctest --preset release -j $(JOBS)
+
+# ASan + UBSan build of everything, with the same tests.
+test-debug: deps
+	@cmake --preset debug >/dev/null
+	@cmake --build --preset debug -j $(JOBS)
+	ctest --preset debug -j $(JOBS)
+
+bench: deps
+	@cmake --preset bench >/dev/null
+	@cmake --build --preset bench -j $(JOBS)
+	@if ls build-bench/bin/bench_* >/dev/null 2>&1; then \
+	  for b in build-bench/bin/bench_*; do $$b --benchmark_out=bench/results.json --benchmark_out_format=json; done; \
+	else echo "bench: no benchmarks yet"; fi
+
+clean:
+	rm -rf build build-debug build-bench

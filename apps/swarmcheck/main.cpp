@@ -1,0 +1,20 @@
+// swarmcheck: the command line. One file per verb; this file only wires them.
+#include <CLI/CLI.hpp>
+
+#include "apps/swarmcheck/run_verb.hpp"
+
+int main(int argc, char** argv) {
+  CLI::App app{
+      "swarmcheck: multi-robot exploration and FSM-supervised missions, simulated and checked"};
+  app.require_subcommand(1);
+  app.set_version_flag("--version", "swarmcheck 0.1.0");
+  int exit_code = 0;
+  swarmcheck::cli::add_run_verb(app, exit_code);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int rc = app.exit(e);
+    return rc == 0 ? 0 : 2;  // usage errors are bad input: status 2
+  }
+  return exit_code;
+}

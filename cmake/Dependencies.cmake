@@ -1,0 +1,16 @@
+# Every dependency is a Debian package (scripts/install-deps installs them).
+find_package(Eigen3 REQUIRED NO_MODULE)
+find_package(Boost 1.74 REQUIRED)              # Hana is header-only, in Boost::boost
+find_package(nlohmann_json 3 REQUIRED)
+find_package(CLI11 REQUIRED)
+find_package(fmt REQUIRED)
+find_package(TBB REQUIRED)
+find_package(PkgConfig REQUIRED)
+pkg_check_modules(Z3 REQUIRED IMPORTED_TARGET z3)   # Z3 ships no CMake config on Debian
+if(SWARMCHECK_TESTS)
+  find_package(GTest REQUIRED)
+  find_package(rapidcheck REQUIRED)
+endif()
+if(SWARMCHECK_BENCH)
+  find_package(benchmark REQUIRED)
+endif()

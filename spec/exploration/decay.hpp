@@ -1,0 +1,36 @@
+#pragma once
+// Evaporation as a decay function (DESIGN.md A5).
+//
+// Per step, tau <- max(0, tau - ertu*dt*tau). The fixed rule sets state this through a decay
+// function so a lazy implementation can be bit-identical to a dense one: a cell keeps
+// (value, tick written) and its value k ticks later is value * F(k), with
+//   f    = max(0, 1 - ertu*dt)
+//   P[0] = f,  P[i+1] = P[i] * P[i]                      (P[i] = f^(2^i), as rounded)
+//   F(k) = product of P[i] over the set bits i of k, multiplied in increasing i, from 1.0
+// The thesis rule set keeps the literal in-place update instead (thesis_evaporate).
+#include <array>
+#include <cstdint>
+
+#include "spec/exploration/types.hpp"
+
+namespace swarmcheck::exploration {
+
+struct DecayTable {
+  std::array<double, 63> pow2{};   // pow2[i] = f^(2^i); k < 2^63
+};
+
+// f = max(0, 1 - ertu * step_size).
+double evaporation_factor(const Params& p);
+
+DecayTable make_decay_table(double f);
+
+// F(k), k >= 0.
+double decay_factor(const DecayTable& table, int64_t k);
+
+// The thesis's updatePheromone for one cell: ph -= (ertu * step_size) * ph; clamp at 0.
+inline double thesis_evaporate(double ph, double ertu_times_dt) {
+  ph -= ertu_times_dt * ph;
+  return ph < 0 ? 0.0 : ph;
+}
+
+}  // namespace swarmcheck::exploration

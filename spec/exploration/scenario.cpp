@@ -1,0 +1,174 @@
+#include "spec/exploration/scenario.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
+
+#include "spec/exploration/neighbourhood.hpp"
+#include "spec/util/hana_json.hpp"
+
+namespace swarmcheck::exploration {
+namespace {
+
+// The shortest text that reads back as v.
+std::string fmt_num(double v) {
+  char buf[32];
+  const auto res = std::to_chars(buf, buf + sizeof buf, v);
+  return std::string(buf, res.ptr);
+}
+
+void require(bool ok, const std::string& path, const std::string& expected, double got) {
+  if (!ok) throw InputError(path, "expected " + expected + ", got " + fmt_num(got));
+}
+
+void validate_params(const Params& p, Mode mode) {
+  require(p.s_range >= 1 && p.s_range <= kRangeMax, "params.s_range",
+          "an integer in [1, " + std::to_string(kRangeMax) + "]", p.s_range);
+  require(std::isfinite(p.a1) && p.a1 > 0, "params.a1", "a finite number > 0", p.a1);
+  require(std::isfinite(p.a2) && p.a2 > 0, "params.a2", "a finite number > 0", p.a2);
+  require(std::isfinite(p.epsilon) && p.epsilon >= 0, "params.epsilon", "a finite number >= 0",
+          p.epsilon);
+  require(std::isfinite(p.max_ph) && p.max_ph >= 0, "params.max_ph", "a finite number >= 0",
+          p.max_ph);
+  require(std::isfinite(p.ertu) && p.ertu >= 0, "params.ertu", "a finite number >= 0", p.ertu);
+  require(std::isfinite(p.eta) && p.eta > 0, "params.eta", "a finite number > 0", p.eta);
+  require(std::isfinite(p.phi), "params.phi", "a finite number", p.phi);
+  require(std::isfinite(p.lambda), "params.lambda", "a finite number", p.lambda);
+  require(std::isfinite(p.step_size) && p.step_size > 0, "params.step_size",
+          "a finite number > 0", p.step_size);
+  if (mode == Mode::cosim)
+    require(p.step_size <= kCosimStepMax_s, "params.step_size",
+            "at most " + fmt_num(kCosimStepMax_s) +
+                " s in cosim mode (the controller's turn loop is stable only for K k_beta dt < 2)",
+            p.step_size);
+  const double deposit = p.max_ph + p.epsilon / p.a2;
+  require(deposit <= kDepositMax, "params",
+          "max_ph + epsilon / a2 at most " + fmt_num(kDepositMax) + " (pheromone must stay finite)",
+          deposit);
+}
+
+std::string cell_text(CellIndex c) {
+  return "[" + std::to_string(c[0]) + ", " + std::to_string(c[1]) + "]";
+}
+
+void validate_cells(const Scenario& s) {
+  std::map<CellIndex, std::size_t> obstacle_at;
+  for (std::size_t k = 0; k < s.obstacles.size(); ++k) {
+    const CellIndex c = s.obstacles[k];
+    const std::string path = "obstacles[" + std::to_string(k) + "]";
+    if (!in_map(c, s.map_size))
+      throw InputError(path, "expected a cell [i, j] with 0 <= i, j < " +
+                                 std::to_string(s.map_size) + ", got " + cell_text(c));
+    if (auto [it, fresh] = obstacle_at.emplace(c, k); !fresh)
+      throw InputError(path, "cell " + cell_text(c) + " repeats obstacles[" +
+                                 std::to_string(it->second) + "]");
+  }
+  if (s.robots.empty()) throw InputError("robots", "expected at least one robot");
+  const double side_m = s.map_size * s.cell_size;
+  std::map<CellIndex, std::size_t> robot_at;
+  for (std::size_t k = 0; k < s.robots.size(); ++k) {
+    const Point_m p = s.robots[k];
+    const std::string path = "robots[" + std::to_string(k) + "]";
+    if (!(std::isfinite(p[0]) && std::isfinite(p[1]) && p[0] >= 0 && p[1] >= 0 &&
+          p[0] < side_m && p[1] < side_m))
+      throw InputError(path, "expected a position [x, y] in metres with 0 <= x, y < " +
+                                 fmt_num(side_m) + ", got [" + fmt_num(p[0]) + ", " +
+                                 fmt_num(p[1]) + "]");
+    const CellIndex c = cell_of(p, s.cell_size);
+    if (obstacle_at.count(c))
+      throw InputError(path, "starts in cell " + cell_text(c) + ", which is obstacles[" +
+                                 std::to_string(obstacle_at[c]) + "]");
+    if (auto [it, fresh] = robot_at.emplace(c, k); !fresh)
+      throw InputError(path, "starts in cell " + cell_text(c) + ", already taken by robots[" +
+                                 std::to_string(it->second) + "]");
+  }
+}
+
+}  // namespace
+
+Params default_params() {
+  Params p;
+  p.s_range = 1;
+  p.a1 = 0.5;
+  p.a2 = 0.5;
+  p.epsilon = 0.5;
+  p.max_ph = 2.0;
+  p.ertu = 0.1;
+  p.eta = 0.9;
+  p.phi = 1.0;
+  p.lambda = 1.0;
+  p.step_size = 0.1;
+  return p;
+}
+
+Scenario default_scenario() {
+  Scenario s;
+  s.map_size = 10;
+  s.cell_size = 1.0;
+  s.robots = {{0.5, 0.5}, {9.5, 0.5}, {0.5, 9.5}, {9.5, 9.5}};
+  s.obstacles = {{4, 4}, {4, 5}, {5, 4}, {5, 5}};
+  s.params = default_params();
+  s.rule = RuleSet::deterministic;
+  s.mode = Mode::cosim;
+  s.seed = 1;
+  s.max_steps = 100000;
+  return s;
+}
+
+void validate(const Scenario& s) {
+  require(s.map_size >= 1 && s.map_size <= kMapSizeMax, "map_size",
+          "an integer in [1, " + std::to_string(kMapSizeMax) + "]", s.map_size);
+  require(std::isfinite(s.cell_size) && s.cell_size > 0, "cell_size", "a finite number > 0",
+          s.cell_size);
+  validate_cells(s);
+  validate_params(s.params, s.mode);
+  require(s.max_steps >= 0 && s.max_steps <= kStepsMax, "max_steps",
+          "an integer in [0, 2^40]", static_cast<double>(s.max_steps));
+}
+
+Scenario parse_scenario(const std::string& text, const std::string& file) {
+  json_io::Json j;
+  try {
+    j = json_io::Json::parse(text);
+  } catch (const nlohmann::json::parse_error& e) {
+    // Locate the byte nlohmann stopped at as line:column, and keep its reason.
+    std::size_t line = 1, col = 1;
+    for (std::size_t k = 0; k + 1 < e.byte && k < text.size(); ++k) {
+      if (text[k] == '\n') { ++line; col = 1; } else { ++col; }
+    }
+    std::string reason = e.what();
+    if (auto pos = reason.find(": ", reason.find("column")); pos != std::string::npos)
+      reason = reason.substr(pos + 2);
+    throw InputError(file + ":" + std::to_string(line) + ":" + std::to_string(col),
+                     "not valid JSON: " + reason);
+  }
+  Scenario s = default_scenario();
+  s.obstacles.clear();   // a file without "obstacles" has none (the default's block is map-10 only)
+  try {
+    if (!j.is_object()) throw InputError("(top level)", "expected an object");
+    if (!j.contains("map_size")) throw InputError("map_size", "missing (the map's side in cells)");
+    if (!j.contains("robots")) throw InputError("robots", "missing (a list of [x, y] positions)");
+    json_io::from_json(j, "", s);
+    validate(s);
+  } catch (const InputError& e) {
+    throw InputError(file + ": " + e.where(), std::string(e.what()).substr(e.where().size() + 2));
+  }
+  return s;
+}
+
+Scenario load_scenario(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path, "cannot open the scenario file");
+  std::ostringstream text;
+  text << in.rdbuf();
+  return parse_scenario(text.str(), path);
+}
+
+int64_t free_cell_count(const Scenario& s) {
+  return int64_t{s.map_size} * s.map_size - static_cast<int64_t>(s.obstacles.size());
+}
+
+}  // namespace swarmcheck::exploration

@@ -1,0 +1,39 @@
+#pragma once
+// The built-in default scenario, scenario files, and their validation.
+//
+// Keys of a scenario file, exactly: map_size, cell_size (default 1), robots ([x, y] metres),
+// obstacles ([i, j] cells), params (the thesis's names; each defaults to the built-in value),
+// rule, mode, seed, max_steps. map_size and robots are required; obstacles default to none;
+// the rest default to the built-in scenario's values. Every problem is an InputError naming the JSON path.
+#include <string>
+
+#include "spec/exploration/types.hpp"
+
+namespace swarmcheck::exploration {
+
+// Limits on everything: inputs beyond these are refused, not attempted.
+inline constexpr int32_t kMapSizeMax = 65536;
+inline constexpr int32_t kRangeMax = 1 << 20;
+inline constexpr double kDepositMax = 1e12;      // max_ph + epsilon / a2
+inline constexpr double kCosimStepMax_s = 0.2;   // controller stability: K k_beta dt < 2
+inline constexpr int64_t kStepsMax = int64_t{1} << 40;
+
+Params default_params();
+
+// The thesis set-up: map 10, four robots at the corner cells, the 2x2 obstacle block at
+// (4,4),(4,5),(5,4),(5,5), a1 = a2 = 0.5, epsilon 0.5, max_ph 2, eta 0.9, phi = lambda = 1,
+// s_range 1; the deterministic rule set, cosim mode, seed 1.
+Scenario default_scenario();
+
+// Throws InputError("<path>", what was expected) on the first problem, checked in key order.
+void validate(const Scenario& s);
+
+// Parses and validates a scenario file's text; `file` prefixes every message.
+Scenario parse_scenario(const std::string& text, const std::string& file);
+
+// Reads, parses and validates a file.
+Scenario load_scenario(const std::string& path);
+
+int64_t free_cell_count(const Scenario& s);
+
+}  // namespace swarmcheck::exploration

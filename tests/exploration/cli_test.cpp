@@ -1,0 +1,124 @@
+// `swarmcheck run` end to end: the summary, the trace, and every bad input (exit status 2, one
+// message, no trace file left behind).
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <string>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Result {
+  int status;
+  std::string out;   // stdout and stderr together
+};
+
+Result sh(const std::string& args) {
+  const std::string cmd = std::string(SWARMCHECK_BIN) + " " + args + " 2>&1";
+  FILE* p = popen(cmd.c_str(), "r");
+  std::string out;
+  char buf[4096];
+  while (std::size_t n = fread(buf, 1, sizeof buf, p)) out.append(buf, n);
+  const int rc = pclose(p);
+  return Result{WEXITSTATUS(rc), out};
+}
+
+fs::path temp_dir() {
+  fs::path d = fs::temp_directory_path() / ("swarmcheck-cli-" + std::to_string(::getpid()));
+  fs::create_directories(d);
+  return d;
+}
+
+std::string write(const fs::path& p, const std::string& text) {
+  std::ofstream(p) << text;
+  return p.string();
+}
+
+}  // namespace
+
+TEST(RunVerb, JsonSummaryOfTheDefaultScenarioInAbstractMode) {
+  const Result r = sh("run --mode abstract --json");
+  ASSERT_EQ(r.status, 0) << r.out;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_TRUE(j.at("completed").get<bool>());
+  EXPECT_EQ(j.at("completion_step"), j.at("steps"));
+  EXPECT_EQ(j.at("eP").get<double>(), 100.0);
+  EXPECT_EQ(j.at("visited"), 96);
+  EXPECT_EQ(j.at("free_cells"), 96);
+  EXPECT_TRUE(j.contains("sTime"));
+}
+
+TEST(RunVerb, IncompleteRunReportsNullCompletionStep) {
+  const Result r = sh("run --mode abstract --steps 3 --json");
+  ASSERT_EQ(r.status, 0) << r.out;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_FALSE(j.at("completed").get<bool>());
+  EXPECT_TRUE(j.at("completion_step").is_null());
+  EXPECT_EQ(j.at("steps"), 3);
+}
+
+TEST(RunVerb, TraceIsAHeaderThenOneRecordPerStepAndRepeatsByteForByte) {
+  const fs::path d = temp_dir();
+  const std::string a = (d / "a.jsonl").string(), b = (d / "b.jsonl").string();
+  ASSERT_EQ(sh("run --rule stochastic --seed 9 --steps 500 --trace " + a).status, 0);
+  ASSERT_EQ(sh("run --rule stochastic --seed 9 --steps 500 --trace " + b).status, 0);
+  std::ifstream fa(a), fb(b);
+  const std::string ta((std::istreambuf_iterator<char>(fa)), {}), tb((std::istreambuf_iterator<char>(fb)), {});
+  EXPECT_EQ(ta, tb);
+  std::istringstream lines(ta);
+  std::string header;
+  std::getline(lines, header);
+  const auto h = nlohmann::json::parse(header);
+  EXPECT_EQ(h.at("format"), "swarmcheck-trace");
+  EXPECT_EQ(h.at("rule"), "stochastic");
+  int records = 0;
+  for (std::string l; std::getline(lines, l);) ++records;
+  EXPECT_EQ(records, 501);   // steps 0..500
+  fs::remove_all(d);
+}
+
+TEST(RunVerb, BadInputsExitTwoWithOneMessageAndLeaveNoTrace) {
+  const fs::path d = temp_dir();
+  const std::string trace = (d / "t.jsonl").string();
+  const std::pair<std::string, std::string> cases[] = {
+      {"{not json", "not valid JSON"},
+      {R"({"map_size": 4, "robots": [[0.5, 0.5]], "extra": 1})", "extra: unknown key"},
+      {R"({"map_size": 4, "robots": [[0.5, "a"]]})", "robots[0][1]: expected a number, got a string"},
+      {R"({"map_size": 0, "robots": [[0.5, 0.5]]})", "map_size: expected an integer in [1, 65536]"},
+      {R"({"map_size": 4, "robots": [[9, 0.5]]})", "robots[0]: expected a position"},
+      {R"({"map_size": 4, "robots": [[0.5, 0.5]], "obstacles": [[0, 0]]})", "which is obstacles[0]"},
+      {R"({"map_size": 4, "robots": [[0.5, 0.5], [0.7, 0.2]]})", "already taken by robots[0]"},
+      {R"({"map_size": 4, "robots": [[0.5, 0.5]], "params": {"eta": 0}})", "params.eta: expected a finite number > 0"},
+  };
+  int k = 0;
+  for (const auto& [text, expected] : cases) {
+    const std::string file = write(d / ("bad" + std::to_string(k++) + ".json"), text);
+    const Result r = sh("run " + file + " --trace " + trace);
+    EXPECT_EQ(r.status, 2) << text;
+    EXPECT_NE(r.out.find(expected), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find(file), std::string::npos) << "the message names the file: " << r.out;
+    EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 1) << "one message: " << r.out;
+    EXPECT_FALSE(fs::exists(trace));
+  }
+  EXPECT_EQ(sh("run --rule greedy").status, 2);
+  EXPECT_EQ(sh("run /nonexistent.json").status, 2);
+  EXPECT_EQ(sh("run --steps -4").status, 2);
+  const Result unwritable = sh("run --steps 2 --trace /nonexistent-dir/t.jsonl");
+  EXPECT_EQ(unwritable.status, 2);
+  EXPECT_NE(unwritable.out.find("cannot write"), std::string::npos);
+  fs::remove_all(d);
+}
+
+TEST(RunVerb, OverridesAreValidatedToo) {
+  const fs::path d = temp_dir();
+  const std::string file = write(d / "slow.json", R"({"map_size": 4, "robots": [[0.5, 0.5]], "mode": "abstract", "params": {"step_size": 1}})");
+  EXPECT_EQ(sh("run " + file + " --json").status, 0);
+  const Result r = sh("run " + file + " --mode cosim");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.out.find("params.step_size: expected at most 0.2 s in cosim mode"), std::string::npos) << r.out;
+  fs::remove_all(d);
+}

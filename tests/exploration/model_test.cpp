@@ -1,0 +1,147 @@
+// The reference model: whole runs, and the properties the fixed rule sets promise.
+#include <gtest/gtest.h>
+#include <rapidcheck/gtest.h>
+
+#include <set>
+
+#include "model/exploration/exploration_model.hpp"
+#include "spec/exploration/invariants.hpp"
+#include "spec/exploration/neighbourhood.hpp"
+#include "spec/exploration/trace.hpp"
+#include "tests/exploration/scenario_gen.hpp"
+
+using namespace swarmcheck::exploration;
+using swarmcheck::exploration::model::ExplorationModel;
+using swarmcheck::exploration::testing::gen_scenario;
+
+namespace {
+
+std::string run_trace(const Scenario& s) {
+  ExplorationModel m(s);
+  std::string out = trace_header(s).dump() + "\n" + trace_line(m.record()) + "\n";
+  while (!m.done()) {
+    m.step();
+    out += trace_line(m.record()) + "\n";
+  }
+  return out;
+}
+
+}  // namespace
+
+TEST(Model, DefaultScenarioReachesFullExplorationInCosimMode) {
+  const Scenario s = default_scenario();
+  ASSERT_EQ(s.mode, Mode::cosim);
+  ExplorationModel m(s);
+  while (!m.done()) m.step();
+  const StepRecord r = m.record();
+  EXPECT_EQ(r.eP, 100.0);
+  EXPECT_EQ(r.visited, 96);
+  ASSERT_TRUE(m.environment().completion_step().has_value());
+  EXPECT_EQ(r.sTime, static_cast<double>(*m.environment().completion_step()) * 0.1);
+  EXPECT_GT(r.planning_steps, 10);   // robots really drove from cell to cell
+}
+
+TEST(Model, InitialDepositIsTheThesisValueAroundEachStartCell) {
+  Scenario s = default_scenario();
+  s.robots = {{0.5, 0.5}};
+  ExplorationModel m(s);
+  EXPECT_EQ(m.environment().cell({0, 0}).pheromone, 3.0);
+  EXPECT_EQ(m.environment().cell({1, 0}).pheromone, 1.2706705664732254);
+  EXPECT_EQ(m.environment().cell({1, 1}).pheromone, 1.1182114931239124);
+  EXPECT_EQ(m.environment().cell({2, 2}).pheromone, 0.0);
+  EXPECT_TRUE(m.environment().cell({0, 0}).visited);
+  EXPECT_EQ(m.environment().cell({0, 0}).occupant, 0);
+}
+
+// One abstract step on a 3x3 map from the centre: the diagonal cells hold the least pheromone
+// (1.118... < 1.270...), and the last of them in raster order is (2, 2).
+TEST(Model, AbstractStepEvaporatesThenDepositsAroundTheNewCell) {
+  Scenario s = default_scenario();
+  s.map_size = 3;
+  s.obstacles.clear();
+  s.robots = {{1.5, 1.5}};
+  s.mode = Mode::abstract;
+  ExplorationModel m(s);
+  m.step();
+  EXPECT_EQ(m.record().robots[0].cell, (CellIndex{2, 2}));
+  EXPECT_EQ(m.record().robots[0].waypoint, (Point_m{2.5, 2.5}));
+  const double f = 1.0 - 0.1 * 0.1;
+  EXPECT_EQ(m.environment().cell({2, 2}).pheromone, 1.1182114931239124 * f + 3.0);
+  EXPECT_EQ(m.environment().cell({0, 0}).pheromone, 1.1182114931239124 * f);   // outside the new window
+  EXPECT_EQ(m.environment().cell({1, 1}).pheromone, 3.0 * f + 1.1182114931239124);
+  EXPECT_EQ(m.record().visited, 2);
+}
+
+// The thesis's bugs, reproduced by the `thesis` rule set and fixed by `deterministic`.
+// Robot 0 at (0, 0), obstacle at (1, 1): the obstacle is the minimum (diagonal deposit), it is
+// blocked, so the robot falls back to the first free candidate in raster order, (0, 1).
+TEST(Model, ThesisFallbackMovesACopyAndDepositsAroundTheChosenCell) {
+  Scenario s = default_scenario();
+  s.map_size = 6;
+  s.obstacles = {{1, 1}};
+  s.robots = {{0.5, 0.5}, {5.5, 5.5}};   // robot 1 moves too, far from robot 0's window
+  s.mode = Mode::abstract;
+  s.rule = RuleSet::thesis;
+  ExplorationModel thesis(s);
+  thesis.step();
+  s.rule = RuleSet::deterministic;
+  ExplorationModel fixed(s);
+  fixed.step();
+  EXPECT_EQ(thesis.record().robots[0].cell, (CellIndex{0, 1}));
+  EXPECT_EQ(fixed.record().robots[0].cell, (CellIndex{0, 1}));
+  // thesis: the fallback moved a copy, so (0, 1) is neither occupied nor visited on the map,
+  // and (0, 0) was released.
+  EXPECT_EQ(thesis.environment().cell({0, 1}).occupant, -1);
+  EXPECT_FALSE(thesis.environment().cell({0, 1}).visited);
+  EXPECT_EQ(thesis.environment().cell({0, 0}).occupant, -1);
+  EXPECT_EQ(fixed.environment().cell({0, 1}).occupant, 0);
+  EXPECT_TRUE(fixed.environment().cell({0, 1}).visited);
+  // thesis: the deposit centre was the obstacle (1, 1); deterministic: the robot's cell (0, 1).
+  const double f = 1.0 - 0.1 * 0.1;
+  EXPECT_EQ(thesis.environment().cell({1, 1}).pheromone, 1.1182114931239124 * f + 3.0);
+  EXPECT_EQ(fixed.environment().cell({1, 1}).pheromone, 1.1182114931239124 * f + 1.2706705664732254);
+  EXPECT_EQ(thesis.record().visited, 3);   // the start cells and robot 1's new cell
+  EXPECT_EQ(fixed.record().visited, 4);
+}
+
+RC_GTEST_PROP(Model, PheromoneIsNeverNegative, ()) {
+  const Scenario s = *gen_scenario();
+  ExplorationModel m(s);
+  while (!m.done()) {
+    m.step();
+    for (int32_t i = 0; i < s.map_size; ++i)
+      for (int32_t j = 0; j < s.map_size; ++j) RC_ASSERT(m.environment().cell({i, j}).pheromone >= 0.0);
+  }
+}
+
+RC_GTEST_PROP(Model, FixedRulesCountAFreeCellAtMostOnceAndNeverShareOrEnterObstacles, ()) {
+  Scenario s = *gen_scenario();
+  s.rule = *rc::gen::element(RuleSet::deterministic, RuleSet::stochastic);
+  ExplorationModel m(s);
+  std::set<CellIndex> ever;
+  for (const auto& p : s.robots) ever.insert(cell_of(p, s.cell_size));
+  while (!m.done()) {
+    m.step();
+    const StepRecord r = m.record();
+    RC_ASSERT(check_occupancy(s, r.robots).empty());
+    for (const auto& rb : r.robots) ever.insert(rb.cell);
+    // visited counts exactly the distinct free cells robots have stood on.
+    RC_ASSERT(r.visited == static_cast<int64_t>(ever.size()));
+    RC_ASSERT(r.visited <= r.free_cells);
+  }
+}
+
+RC_GTEST_PROP(Model, SameSeedGivesTheSameTraceBytes, ()) {
+  const Scenario s = *gen_scenario(8, 30, 300);
+  RC_ASSERT(run_trace(s) == run_trace(s));
+}
+
+TEST(Model, DifferentSeedsGiveDifferentStochasticRuns) {
+  Scenario s = default_scenario();
+  s.mode = Mode::abstract;
+  s.rule = RuleSet::stochastic;
+  s.max_steps = 40;
+  const std::string a = run_trace(s);
+  s.seed = 2;
+  EXPECT_NE(a, run_trace(s));
+}
