@@ -82,3 +82,8 @@ TEST(Scenario, EveryBadInputNamesItsPathAndWhatWasExpected) {
   EXPECT_EQ(error_of(R"({"map_size": 4, "robots": [], "obstacles": []})"),
             "s.json: robots: expected at least one robot");
 }
+
+TEST(Scenario, BundledDefaultFileEqualsTheBuiltInDefault) {
+  const Scenario s = load_scenario(std::string(SWARMCHECK_SOURCE_DIR) + "/scenarios/default.json");
+  EXPECT_EQ(json_io::to_json(s), json_io::to_json(default_scenario()));
+}
