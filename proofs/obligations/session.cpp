@@ -1,0 +1,34 @@
+#include "proofs/obligations/session.hpp"
+
+namespace swarmcheck::proofs {
+
+const char* to_string(z3::check_result r) {
+  switch (r) {
+    case z3::sat: return "sat";
+    case z3::unsat: return "unsat";
+    default: return "unknown";
+  }
+}
+
+z3::solver Session::make_solver() {
+  z3::solver s(ctx_);
+  s.set("timeout", timeout_ms_);
+  return s;
+}
+
+z3::solver Session::make_nonlinear_solver() {
+  z3::solver s = z3::tactic(ctx_, "qfnra-nlsat").mk_solver();
+  s.set("timeout", timeout_ms_);
+  return s;
+}
+
+z3::check_result Session::check(z3::solver& s, const std::string& label) {
+  // to_smt2() already ends in (check-sat).
+  QueryRecord q{label, s.to_smt2(), ""};
+  const z3::check_result r = s.check();
+  q.answer = to_string(r);
+  queries_.push_back(std::move(q));
+  return r;
+}
+
+}  // namespace swarmcheck::proofs

@@ -1,0 +1,42 @@
+#pragma once
+// Session: the Z3 context of one obligation, and the log of every query it checked, so that
+// `prove --smt2` can write each query as SMT-LIB2 together with the answer Z3 gave here.
+#include <string>
+#include <vector>
+
+#include "proofs/obligations/z3.hpp"
+
+namespace swarmcheck::proofs {
+
+struct QueryRecord {
+  std::string label;    // short, file-name safe: "step-n3-k2"
+  std::string smt2;     // the solver's assertions as SMT-LIB2, ending in (check-sat)
+  std::string answer;   // "sat", "unsat" or "unknown", as the C++ API answered
+};
+
+class Session {
+ public:
+  explicit Session(unsigned timeout_ms = 20000) : timeout_ms_(timeout_ms) {}
+  Session(const Session&) = delete;
+  Session& operator=(const Session&) = delete;
+
+  z3::context& ctx() { return ctx_; }
+  // A solver for linear, UF, bit-vector and floating-point queries, with the timeout set.
+  z3::solver make_solver();
+  // A solver for nonlinear real arithmetic: the qfnra-nlsat tactic (VERIFICATION.md: the
+  // default solver may give up or ignore its timeout on these).
+  z3::solver make_nonlinear_solver();
+  // Checks the solver's assertions and logs the query and its answer.
+  z3::check_result check(z3::solver& s, const std::string& label);
+
+  const std::vector<QueryRecord>& queries() const { return queries_; }
+
+ private:
+  unsigned timeout_ms_;
+  z3::context ctx_;
+  std::vector<QueryRecord> queries_;
+};
+
+const char* to_string(z3::check_result r);
+
+}  // namespace swarmcheck::proofs

@@ -1,0 +1,98 @@
+// The prove verb end to end (through the private CLI that wires it as main.cpp does): every
+// verdict is met, bad input gives status 2, and the SMT-LIB2 files re-check with the z3 binary.
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <set>
+#include <string>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct CommandResult {
+  int status;
+  std::string out;
+};
+
+CommandResult run(const std::string& command) {
+  CommandResult r{-1, ""};
+  FILE* p = ::popen((command + " 2>&1").c_str(), "r");
+  if (p == nullptr) return r;
+  std::array<char, 4096> buf{};
+  std::size_t n = 0;
+  while ((n = std::fread(buf.data(), 1, buf.size(), p)) > 0) r.out.append(buf.data(), n);
+  const int st = ::pclose(p);
+  r.status = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
+  return r;
+}
+
+std::string prove(const std::string& args) { return std::string(SWARMCHECK_PROVE_BIN) + " prove " + args; }
+
+fs::path fresh_dir(const std::string& name) {
+  const fs::path d = fs::temp_directory_path() / ("swarmcheck-proofs-" + name + "-" + std::to_string(::getpid()));
+  fs::remove_all(d);
+  return d;
+}
+
+TEST(ProveCli, JsonListsEveryObligationWithItsExpectedVerdictAllMet) {
+  const CommandResult r = run(prove("--json"));
+  ASSERT_EQ(r.status, 0) << r.out;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_TRUE(j.at("all_met").get<bool>());
+  std::set<std::string> names;
+  for (const auto& o : j.at("obligations")) {
+    names.insert(o.at("name").get<std::string>());
+    EXPECT_TRUE(o.at("met").get<bool>()) << o.dump(2);
+    EXPECT_EQ(o.at("result"), o.at("expected")) << o.dump(2);
+    EXPECT_FALSE(o.at("assumptions").empty());
+  }
+  for (const char* required : {"servo-saturation", "servo-thesis-clamp", "pheromone-bounds"})
+    EXPECT_TRUE(names.count(required)) << required;
+  EXPECT_LT(j.at("total_seconds").get<double>(), 60.0);
+}
+
+TEST(ProveCli, AnUnknownObligationNameIsBadInputAndListsTheValidNames) {
+  const CommandResult r = run(prove("--only no-such-thing"));
+  EXPECT_EQ(r.status, 2) << r.out;
+  EXPECT_NE(r.out.find("no-such-thing"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("servo-saturation"), std::string::npos) << r.out;
+}
+
+TEST(ProveCli, OnlyRunsOneObligationAndPrintsTheTable) {
+  const CommandResult r = run(prove("--only servo-thesis-clamp"));
+  EXPECT_EQ(r.status, 0) << r.out;
+  EXPECT_NE(r.out.find("servo-thesis-clamp"), std::string::npos);
+  EXPECT_NE(r.out.find("refuted"), std::string::npos);
+  EXPECT_EQ(r.out.find("pheromone-bounds"), std::string::npos);
+}
+
+// Every query file re-checked by the z3 binary gives the answer the C++ API gave.
+TEST(ProveCli, EverySmt2FileRechecksWithTheZ3BinaryToTheSameAnswer) {
+  const fs::path dir = fresh_dir("smt2");
+  const CommandResult r = run(prove("--json --smt2 " + dir.string()));
+  ASSERT_EQ(r.status, 0) << r.out;
+  int files = 0;
+  for (const auto& e : fs::directory_iterator(dir)) {
+    if (e.path().extension() != ".smt2") continue;
+    ++files;
+    std::ifstream in(e.path());
+    std::string first, second;
+    std::getline(in, first);
+    std::getline(in, second);
+    ASSERT_EQ(second.rfind("; expect: ", 0), 0U) << e.path();
+    const std::string expect = second.substr(10);
+    const CommandResult z = run(std::string(SWARMCHECK_Z3_BIN) + " -T:60 " + e.path().string());
+    std::string answer = z.out.substr(0, z.out.find('\n'));
+    EXPECT_EQ(answer, expect) << e.path() << "\n" << z.out;
+  }
+  EXPECT_GT(files, 20);
+  fs::remove_all(dir);
+}
+
+}  // namespace
