@@ -67,9 +67,9 @@ void write_smt2(const std::filesystem::path& dir, const ObligationReport& r) {
 }
 
 void print_table(const std::vector<ObligationReport>& reports, double total) {
-  fmt::print("{:<28} {:<9} {:<9} {:>8}\n", "obligation", "expected", "result", "seconds");
+  fmt::print("{:<32} {:<9} {:<9} {:>8}\n", "obligation", "expected", "result", "seconds");
   for (const ObligationReport& r : reports)
-    fmt::print("{:<28} {:<9} {:<9} {:>8.3f}{}\n", r.name, proofs::to_string(r.expected),
+    fmt::print("{:<32} {:<9} {:<9} {:>8.3f}{}\n", r.name, proofs::to_string(r.expected),
                proofs::to_string(r.result), r.seconds, r.met() ? "" : "   <- NOT AS EXPECTED");
   fmt::print("total {:.3f} s\n", total);
   for (const ObligationReport& r : reports) fmt::print("\n{}: {}\n  {}\n", r.name, r.property, r.detail);

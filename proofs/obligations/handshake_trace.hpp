@@ -1,0 +1,50 @@
+#pragma once
+// Counterexample traces of the handshake obligations, JSON Lines:
+//   {"format":"swarmcheck-trace","format_version":1,"system":"handshake","obligation":NAME,
+//    "robots":N,"master":"jacobi"|"gauss-seidel","controller":"spec"|"late"}
+// then one object per master step t: the Environment's state at the start of the step
+// ("flag", "onDestinationOutput"), whether it plans in the step ("plan"), each controller's
+// onDestinationOutput as the Environment reads it, its arrival input, whether it accepts a
+// waypoint in the step, whether its robot stands on its issued waypoint (ghost "reached"),
+// and "violated": the property the step breaks, on that step only.
+#include <cstdint>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+namespace swarmcheck::proofs::handshake {
+
+struct TraceController {
+  int32_t on_destination_output = 0;
+  bool arrival = false;
+  bool accepted = false;
+  bool reached = false;
+};
+
+struct TraceStep {
+  int64_t step = 0;
+  int32_t flag = 0;
+  int32_t on_destination_output = 0;
+  bool plan = false;
+  std::vector<TraceController> controllers;
+  std::string violated;   // empty: none
+};
+
+struct HandshakeTrace {
+  std::string obligation;
+  int32_t robots = 0;
+  std::string master;       // "jacobi" or "gauss-seidel"
+  std::string controller;   // "spec" or "late"
+  std::vector<TraceStep> steps;
+};
+
+std::string write_handshake_trace(const HandshakeTrace& t);
+
+// Reads a trace file; throws swarmcheck::InputError naming file:line for a malformed one.
+HandshakeTrace read_handshake_trace(const std::string& path);
+
+// Prints the trace step by step as a table (for `swarmcheck replay`); returns 0.
+// Throws swarmcheck::InputError naming file:line for a malformed trace.
+int show_handshake_trace(const std::string& path, std::FILE* out);
+
+}  // namespace swarmcheck::proofs::handshake
