@@ -22,7 +22,8 @@ Verdict verdict_from_string(const std::string& s) {
 const std::vector<Obligation>& all_obligations() {
   static const std::vector<Obligation> all = [] {
     std::vector<Obligation> v;
-    for (auto part : {servo_obligations, handshake_obligations, pheromone_obligations})
+    for (auto part : {servo_obligations, atan2_obligations, handshake_obligations,
+                      pheromone_obligations, occupancy_obligations})
       for (Obligation& o : part()) v.push_back(std::move(o));
     return v;
   }();
