@@ -52,9 +52,26 @@ TEST(ProveCli, JsonListsEveryObligationWithItsExpectedVerdictAllMet) {
     EXPECT_EQ(o.at("result"), o.at("expected")) << o.dump(2);
     EXPECT_FALSE(o.at("assumptions").empty());
   }
-  for (const char* required : {"servo-saturation", "servo-thesis-clamp", "pheromone-bounds"})
+  for (const char* required : {"servo-saturation", "servo-thesis-clamp", "atan2-fix", "atan2-without-fix",
+                               "handshake-safety", "handshake-gauss-seidel", "handshake-late-controller",
+                               "handshake-epoch-gauss-seidel", "handshake-epoch-late-controller",
+                               "pheromone-bounds", "occupancy"})
     EXPECT_TRUE(names.count(required)) << required;
   EXPECT_LT(j.at("total_seconds").get<double>(), 60.0);
+}
+
+TEST(ProveCli, RefutedProtocolObligationsWriteTheirTraces) {
+  const fs::path dir = fresh_dir("traces");
+  const CommandResult r = run(prove("--only handshake-late-controller --trace-dir " + dir.string()));
+  EXPECT_EQ(r.status, 0) << r.out;
+  std::ifstream in(dir / "handshake-late-controller.jsonl");
+  std::string header;
+  std::getline(in, header);
+  const auto h = nlohmann::json::parse(header);
+  EXPECT_EQ(h.at("system"), "handshake");
+  EXPECT_EQ(h.at("master"), "jacobi");
+  EXPECT_EQ(h.at("controller"), "late");
+  fs::remove_all(dir);
 }
 
 TEST(ProveCli, AnUnknownObligationNameIsBadInputAndListsTheValidNames) {
