@@ -128,8 +128,9 @@ int show_handshake_trace(const std::string& path, std::FILE* out) {
   const HandshakeTrace t = read_handshake_trace(path);
   fmt::print(out, "handshake trace of {}: {} robot(s), {} master, {} controller\n", t.obligation, t.robots,
              t.master, t.controller);
-  fmt::print(out, "ctrl i: out = onDestinationOutput read by the Environment, arr = arrival input,\n"
-                  "        acc = accepts a waypoint this step, at = stands on its issued waypoint\n\n");
+  fmt::print(out, "flag, out, ctrl out: the Environment's and each controller's onDestinationOutput at the\n"
+                  "start of the step; plan: the Environment plans in the step; arr: arrival input;\n"
+                  "acc: accepts a waypoint in the step; at: stands on its issued waypoint\n\n");
   std::string head = fmt::format("{:>5}  {:>4} {:>3} {:>4}", "step", "flag", "out", "plan");
   for (int32_t i = 0; i < t.robots; ++i) head += fmt::format("  | ctrl {:<2} out arr acc at", i);
   fmt::print(out, "{}\n", head);

@@ -4,7 +4,8 @@
 //    "robots":N,"master":"jacobi"|"gauss-seidel","controller":"spec"|"late"}
 // then one object per master step t: the Environment's state at the start of the step
 // ("flag", "onDestinationOutput"), whether it plans in the step ("plan"), each controller's
-// onDestinationOutput as the Environment reads it, its arrival input, whether it accepts a
+// onDestinationOutput at the start of the step (a late controller's: the value on its port,
+// one step old), its arrival input, whether it accepts a
 // waypoint in the step, whether its robot stands on its issued waypoint (ghost "reached"),
 // and "violated": the property the step breaks, on that step only.
 #include <cstdint>
