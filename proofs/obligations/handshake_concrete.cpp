@@ -57,7 +57,7 @@ bool environment(const Variant& v, ConcreteState& s, const std::vector<Controlle
 
 const char* to_string(Master m) { return m == Master::jacobi ? "jacobi" : "gauss-seidel"; }
 
-ConcreteState initial_state(const Variant& v, int robots) {
+ConcreteState initial_state(const Variant&, int robots) {
   ConcreteState s;
   s.env = exploration::initial_handshake();
   const auto n = static_cast<std::size_t>(robots);
@@ -66,7 +66,6 @@ ConcreteState initial_state(const Variant& v, int robots) {
   s.port = s.internal;
   s.reached.assign(n, true);
   s.fresh.assign(n, false);
-  (void)v;
   return s;
 }
 

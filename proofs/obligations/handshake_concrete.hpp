@@ -54,6 +54,8 @@ struct StepEvents {
   std::string violated;   // "" or the property this step breaks
 };
 
+// The same for every variant: the spec's initial handshake and controllers, robots on their
+// waypoints, nothing issued.
 ConcreteState initial_state(const Variant& v, int robots);
 
 // One master step with these arrival inputs (arrival[i]: robot i stands on its waypoint).
