@@ -11,6 +11,7 @@
 #include "apps/swarmcheck/output_file.hpp"
 #include "apps/swarmcheck/verb.hpp"
 #include "model/exploration/exploration_model.hpp"
+#include "swarmcheck/exploration.hpp"
 #include "spec/exploration/scenario.hpp"
 #include "spec/exploration/trace.hpp"
 
@@ -26,6 +27,7 @@ struct RunOptions {
   std::optional<int64_t> steps;
   std::string trace_path;
   int64_t trace_every = 1;
+  std::string engine = "impl";
   bool json = false;
 };
 
@@ -48,13 +50,12 @@ Scenario resolve_scenario(const RunOptions& o) {
 class Progress {
  public:
   Progress() : enabled_(::isatty(2) == 1), last_(std::chrono::steady_clock::now()) {}
-  void update(const StepRecord& r, int64_t max_steps) {
+  void update(int64_t step, double eP, int64_t max_steps) {
     if (!enabled_) return;
     const auto now = std::chrono::steady_clock::now();
     if (now - last_ < std::chrono::milliseconds(100)) return;
     last_ = now;
-    fmt::print(stderr, "\rstep {:>9} / {}  eP {:6.2f} %  planning steps {}   ", r.step, max_steps,
-               r.eP, r.planning_steps);
+    fmt::print(stderr, "\rstep {:>9} / {}  eP {:6.2f} %   ", step, max_steps, eP);
   }
   void finish() {
     if (enabled_) fmt::print(stderr, "\r{:80}\r", "");
@@ -65,23 +66,25 @@ class Progress {
   std::chrono::steady_clock::time_point last_;
 };
 
-void print_summary(const Scenario& s, const RunOptions& o, const StepRecord& r,
+void print_summary(const Scenario& s, const RunOptions& o, int64_t steps, int64_t planning_steps,
+                   double eP, double sTime, int64_t visited, int64_t free_cells,
                    std::optional<int64_t> completion) {
   if (o.json) {
     json_io::Json j = json_io::Json::object();
     j["completed"] = completion.has_value();
     j["completion_step"] = completion ? json_io::Json(*completion) : json_io::Json(nullptr);
-    j["steps"] = r.step;
-    j["planning_steps"] = r.planning_steps;
-    j["eP"] = r.eP;
-    j["sTime"] = r.sTime;
-    j["visited"] = r.visited;
-    j["free_cells"] = r.free_cells;
+    j["steps"] = steps;
+    j["planning_steps"] = planning_steps;
+    j["eP"] = eP;
+    j["sTime"] = sTime;
+    j["visited"] = visited;
+    j["free_cells"] = free_cells;
     j["rule"] = json_io::enum_to_string(s.rule);
     j["mode"] = json_io::enum_to_string(s.mode);
     j["seed"] = s.seed;
     j["map_size"] = s.map_size;
     j["robots"] = s.robots.size();
+    j["engine"] = o.engine;
     fmt::print("{}\n", j.dump());
     return;
   }
@@ -92,39 +95,60 @@ void print_summary(const Scenario& s, const RunOptions& o, const StepRecord& r,
   if (completion)
     fmt::print("completed at step {} (sTime {:.1f} s): eP {:.2f} %, {} / {} free cells visited, "
                "{} planning steps\n",
-               *completion, r.sTime, r.eP, r.visited, r.free_cells, r.planning_steps);
+               *completion, sTime, eP, visited, free_cells, planning_steps);
   else
     fmt::print("not complete after {} steps (max_steps): eP {:.2f} %, {} / {} free cells "
                "visited, {} planning steps\n",
-               r.step, r.eP, r.visited, r.free_cells, r.planning_steps);
+               steps, eP, visited, free_cells, planning_steps);
 }
 
-int run(const RunOptions& o) {
-  if (o.trace_every < 1) throw InputError("--trace-every", "expected an integer >= 1");
-  const Scenario s = resolve_scenario(o);
+// Runs any engine with the model's interface (step, done, steps, record, completion_step).
+template <class Sim>
+int run_with(Sim& sim, const Scenario& s, const RunOptions& o) {
   std::unique_ptr<AtomicOutputFile> trace;
   if (!o.trace_path.empty()) {
     trace = std::make_unique<AtomicOutputFile>(o.trace_path);
     trace->stream() << trace_header(s).dump() << '\n';
+    trace->stream() << trace_line(sim.record()) << '\n';
   }
-  model::ExplorationModel m(s);
   Progress progress;
-  StepRecord r = m.record();
-  if (trace) trace->stream() << trace_line(r) << '\n';
-  while (!m.done()) {
-    m.step();
-    const bool last = m.done();
-    if (trace && (m.steps() % o.trace_every == 0 || last)) {
-      r = m.record();
-      trace->stream() << trace_line(r) << '\n';
-    }
-    if (m.steps() % 256 == 0) progress.update(m.record(), s.max_steps);
+  while (!sim.done()) {
+    sim.step();
+    if (trace && (sim.steps() % o.trace_every == 0 || sim.done())) trace->stream() << trace_line(sim.record()) << '\n';
+    if (sim.steps() % 4096 == 0) progress.update(sim.steps(), sim.eP(), s.max_steps);
   }
   progress.finish();
-  r = m.record();
   if (trace) trace->commit();
-  print_summary(s, o, r, m.environment().completion_step());
+  print_summary(s, o, sim.steps(), sim.planning_steps(), sim.eP(), sim.sTime(), sim.visited(),
+                sim.free_cells(), sim.completion_step());
   return 0;
+}
+
+// The reference model behind the same interface.
+struct ModelEngine {
+  explicit ModelEngine(const Scenario& s) : m(s) {}
+  model::ExplorationModel m;
+  void step() { m.step(); }
+  bool done() const { return m.done(); }
+  int64_t steps() const { return m.steps(); }
+  StepRecord record() const { return m.record(); }
+  int64_t planning_steps() const { return m.environment().planning_steps(); }
+  double eP() const { return m.environment().eP(); }
+  double sTime() const { return m.environment().sTime(); }
+  int64_t visited() const { return m.environment().visited(); }
+  int64_t free_cells() const { return m.environment().free_cells(); }
+  std::optional<int64_t> completion_step() const { return m.environment().completion_step(); }
+};
+
+int run(const RunOptions& o) {
+  if (o.trace_every < 1) throw InputError("--trace-every", "expected an integer >= 1");
+  const Scenario s = resolve_scenario(o);
+  if (o.engine == "model") {
+    ModelEngine m(s);
+    return run_with(m, s, o);
+  }
+  Exploration x(s);
+  return run_with(x, s, o);
 }
 
 }  // namespace
@@ -143,6 +167,9 @@ void add_run_verb(CLI::App& app, int& exit_code) {
   cmd->add_option("--steps", opts->steps, "Master steps at most (overrides max_steps)");
   cmd->add_option("--trace", opts->trace_path, "Write the JSON Lines trace to FILE");
   cmd->add_option("--trace-every", opts->trace_every, "Record every K-th step in the trace")
+      ->capture_default_str();
+  cmd->add_option("--engine", opts->engine, "impl (the optimised library) | model (the reference)")
+      ->check(CLI::IsMember({"impl", "model"}))
       ->capture_default_str();
   cmd->add_flag("--json", opts->json, "Print the summary as one JSON object");
   cmd->callback([opts, &exit_code] { exit_code = guarded([&] { return run(*opts); }); });

@@ -145,17 +145,21 @@ Scenario parse_scenario(const std::string& text, const std::string& file) {
     throw InputError(file + ":" + std::to_string(line) + ":" + std::to_string(col),
                      "not valid JSON: " + reason);
   }
-  Scenario s = default_scenario();
-  s.obstacles.clear();   // a file without "obstacles" has none (the default's block is map-10 only)
   try {
-    if (!j.is_object()) throw InputError("(top level)", "expected an object");
-    if (!j.contains("map_size")) throw InputError("map_size", "missing (the map's side in cells)");
-    if (!j.contains("robots")) throw InputError("robots", "missing (a list of [x, y] positions)");
-    json_io::from_json(j, "", s);
-    validate(s);
+    return scenario_from_json(j);
   } catch (const InputError& e) {
     throw InputError(file + ": " + e.where(), std::string(e.what()).substr(e.where().size() + 2));
   }
+}
+
+Scenario scenario_from_json(const json_io::Json& j) {
+  Scenario s = default_scenario();
+  s.obstacles.clear();   // a file without "obstacles" has none (the default's block is map-10 only)
+  if (!j.is_object()) throw InputError("(top level)", "expected an object");
+  if (!j.contains("map_size")) throw InputError("map_size", "missing (the map's side in cells)");
+  if (!j.contains("robots")) throw InputError("robots", "missing (a list of [x, y] positions)");
+  json_io::from_json(j, "", s);
+  validate(s);
   return s;
 }
 

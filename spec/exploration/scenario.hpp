@@ -8,6 +8,7 @@
 #include <string>
 
 #include "spec/exploration/types.hpp"
+#include "spec/util/hana_json.hpp"
 
 namespace swarmcheck::exploration {
 
@@ -30,6 +31,9 @@ void validate(const Scenario& s);
 
 // Parses and validates a scenario file's text; `file` prefixes every message.
 Scenario parse_scenario(const std::string& text, const std::string& file);
+
+// A scenario from parsed JSON (as parse_scenario, without the file name in the messages).
+Scenario scenario_from_json(const json_io::Json& j);
 
 // Reads, parses and validates a file.
 Scenario load_scenario(const std::string& path);

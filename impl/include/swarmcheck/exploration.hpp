@@ -1,0 +1,65 @@
+#pragma once
+// swarmcheck: the exploration library (system A). Link swarmcheck::swarmcheck.
+//
+//   #include <swarmcheck/exploration.hpp>
+//   swarmcheck::exploration::Scenario s = swarmcheck::exploration::default_scenario();
+//   swarmcheck::Exploration run(s);          // validates s; throws swarmcheck::InputError
+//   while (!run.done()) run.step();
+//   std::printf("eP %.1f %% after %lld steps\n", run.eP(), (long long)run.steps());
+//
+// Same observable behaviour as the reference model, bit for bit, for every rule set and mode
+// (swarmcheck's conformance harness checks it). Cost per step grows with the robots' work, not
+// with the map: pheromone evaporation is evaluated lazily on the cells read or written (except
+// the `thesis` rule set's literal per-step update, which is dense), and robots whose windows
+// cannot interact decide in parallel with exactly the sequential result.
+#include <cstdint>
+#include <memory>
+#include <optional>
+
+#include "spec/exploration/scenario.hpp"
+#include "spec/exploration/types.hpp"
+#include "spec/util/input_error.hpp"
+
+namespace swarmcheck {
+
+struct ExplorationOptions {
+  // Planning steps with at least this many robots decide in parallel (oneTBB), grouped so that
+  // robots whose windows may interact stay in index order; below it, one thread.
+  int32_t parallel_min_robots = 512;
+  // Controllers and bodies of at least this many robots step in parallel.
+  int32_t parallel_min_bodies = 4096;
+};
+
+class Exploration {
+ public:
+  explicit Exploration(const exploration::Scenario& s, ExplorationOptions options = {},
+                       exploration::RobotParams robot = {});
+  ~Exploration();
+  Exploration(Exploration&&) noexcept;
+  Exploration& operator=(Exploration&&) noexcept;
+
+  // One master step (the Jacobi exchange in cosim mode; one planning step in abstract mode).
+  void step();
+  // Completed (eP reached 100) or max_steps steps done.
+  bool done() const;
+
+  int64_t steps() const;
+  int64_t planning_steps() const;
+  int64_t visited() const;
+  int64_t free_cells() const;
+  double eP() const;
+  double sTime() const;
+  std::optional<int64_t> completion_step() const;
+
+  // The observable state (one trace record). O(cells) for the pheromone digest.
+  exploration::StepRecord record() const;
+  // One cell, with its pheromone value current at steps().
+  exploration::Cell cell(exploration::CellIndex c) const;
+  const exploration::Scenario& scenario() const;
+
+ private:
+  struct State;
+  std::unique_ptr<State> state_;
+};
+
+}  // namespace swarmcheck

@@ -1,0 +1,42 @@
+// The mutation check: this file is compiled once per injected fault (impl/exploration/
+// mutants.hpp), linked with that mutant's impl, and `conform` with its default case budget must
+// catch the fault, shrink it and write a trace that replays: the model reproduces every record,
+// the mutant parts from it at the recorded step.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "conformance/exploration/conform.hpp"
+#include "conformance/exploration/trace_io.hpp"
+
+using namespace swarmcheck::conformance;
+
+#ifndef SWARMCHECK_TEST_MUTANT
+#error "compile with -DSWARMCHECK_TEST_MUTANT=k"
+#endif
+
+TEST(Mutation, ConformCatchesTheInjectedFaultWithAMinimalReplayableTrace) {
+  ConformOptions o;   // the default case budget and seed
+  o.out_dir = (std::filesystem::temp_directory_path() /
+               ("swarmcheck-mutant-" + std::to_string(SWARMCHECK_TEST_MUTANT) + "-" + std::to_string(::getpid())))
+                  .string();
+  const ConformReport r = run_conform(o);
+  ASSERT_TRUE(r.counterexample.has_value()) << "mutant " << SWARMCHECK_TEST_MUTANT << " survived "
+                                            << r.cases_run << " cases";
+  const Counterexample& cx = *r.counterexample;
+  ASSERT_TRUE(std::filesystem::exists(cx.trace_path));
+  const ReplayResult on_model = replay_trace(cx.trace_path, Engine::model);
+  EXPECT_FALSE(on_model.divergence.has_value()) << on_model.divergence->describe();
+  EXPECT_EQ(on_model.records, cx.divergence.step + 1);
+  const ReplayResult on_impl = replay_trace(cx.trace_path, Engine::impl);
+  ASSERT_TRUE(on_impl.divergence.has_value());
+  EXPECT_EQ(on_impl.divergence->step, cx.divergence.step);
+  const auto& s = cx.minimal.scenario;
+  std::printf("mutant %d: caught after %d cases; shrunk %d times to map %d, %zu robots, %zu obstacles, "
+              "%s/%s; trace %lld steps; %s\n",
+              SWARMCHECK_TEST_MUTANT, r.cases_run, cx.shrinks, s.map_size, s.robots.size(), s.obstacles.size(),
+              swarmcheck::json_io::enum_to_string(s.rule).c_str(), swarmcheck::json_io::enum_to_string(s.mode).c_str(),
+              static_cast<long long>(cx.divergence.step), cx.divergence.describe().c_str());
+  std::filesystem::remove_all(o.out_dir);
+}
