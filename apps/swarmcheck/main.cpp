@@ -1,6 +1,9 @@
 // swarmcheck: the command line. One file per verb; this file only wires them.
 #include <CLI/CLI.hpp>
 
+#include "apps/swarmcheck/conform_verb.hpp"
+#include "apps/swarmcheck/fsm_verb.hpp"
+#include "apps/swarmcheck/prove_verb.hpp"
 #include "apps/swarmcheck/run_verb.hpp"
 
 int main(int argc, char** argv) {
@@ -10,6 +13,10 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", "swarmcheck 0.1.0");
   int exit_code = 0;
   swarmcheck::cli::add_run_verb(app, exit_code);
+  swarmcheck::cli::add_conform_verb(app, exit_code);
+  swarmcheck::cli::add_replay_verb(app, exit_code);
+  swarmcheck::cli::add_fsm_verb(app, exit_code);
+  swarmcheck::cli::add_prove_verb(app, exit_code);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
