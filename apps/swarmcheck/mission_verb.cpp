@@ -1,0 +1,177 @@
+// `swarmcheck mission plan MISSION.json [--from STATE] [--planner exact|thesis] [--json]`
+// `swarmcheck mission run MISSION.json [--trace FILE] [--json] [--body unicycle|kinematic]`
+// The mission file is loaded and checked first (bad input: one message, status 2). plan prints
+// the events in order, each robot's tasks and travel, the makespan and the total (status 1 when
+// no marked state can be reached). run simulates the robots under the supervisor and reports
+// whether the mission completed (status 0) or why not (status 1); --trace writes JSON Lines
+// (temporary file + rename).
+#include "apps/swarmcheck/mission_verb.hpp"
+
+#include <fmt/format.h>
+
+#include <memory>
+#include <nlohmann/json.hpp>
+
+#include "apps/swarmcheck/output_file.hpp"
+#include "apps/swarmcheck/verb.hpp"
+#include "impl/mission/load.hpp"
+#include "impl/mission/planner.hpp"
+#include "impl/mission/run.hpp"
+#include "impl/mission/trace.hpp"
+#include "model/mission/thesis_dijkstra.hpp"
+
+namespace swarmcheck::cli {
+
+namespace {
+
+namespace sm = spec::mission;
+using Json = nlohmann::ordered_json;
+
+struct PlanOptions {
+  std::string file;
+  std::string from;
+  std::string planner = "exact";
+  bool json = false;
+};
+
+struct RunOptions {
+  std::string file;
+  std::string trace;
+  std::string body = "unicycle";
+  double dt = 0.05;
+  double max_time = 3600.0;
+  double speed = 0.5;
+  bool json = false;
+};
+
+std::string join(const std::vector<std::string>& xs) {
+  std::string out;
+  for (const auto& x : xs) out += (out.empty() ? "" : ", ") + x;
+  return out;
+}
+
+int run_plan(const PlanOptions& o) {
+  const sm::Mission m = impl::mission::load_mission(o.file);
+  const std::string from = o.from.empty() ? m.initial_state : o.from;
+  if (std::find(m.fsm.states.begin(), m.fsm.states.end(), from) == m.fsm.states.end())
+    throw InputError("--from", fmt::format("state \"{}\" is not in {}", from, m.fsm_name));
+  const sm::PlanQuery q = sm::query_from(m, from);
+  sm::Plan p;
+  if (o.planner == "thesis") {
+    p = model::mission::thesis_plan(m, q);
+  } else {
+    impl::mission::Planner planner(m);
+    p = planner.plan(q);
+  }
+  const auto seqs = sm::task_sequences(m, p.events);
+  if (o.json) {
+    Json robots = Json::array();
+    for (std::size_t r = 0; r < m.robots.size(); ++r) {
+      Json tasks = Json::array();
+      for (const auto t : seqs[r]) tasks.push_back(m.tasks[t].name);
+      robots.push_back({{"name", m.robots[r].name},
+                        {"tasks", tasks},
+                        {"travel", p.found ? Json(p.cost.travel[r]) : Json(nullptr)}});
+    }
+    Json j = {{"mission", o.file},       {"planner", o.planner}, {"from", from},
+              {"found", p.found},        {"final_state", p.found ? Json(p.final_state) : Json(nullptr)},
+              {"events", p.events},      {"robots", robots},
+              {"makespan", p.found ? Json(p.cost.makespan) : Json(nullptr)},
+              {"total", p.found ? Json(p.cost.total) : Json(nullptr)}};
+    fmt::print("{}\n", j.dump(2));
+  } else if (p.found) {
+    fmt::print("plan ({} planner) from {} to {}: {} events\n", o.planner, from, p.final_state,
+               p.events.size());
+    fmt::print("  events: {}\n", join(p.events));
+    for (std::size_t r = 0; r < m.robots.size(); ++r) {
+      std::vector<std::string> names;
+      for (const auto t : seqs[r]) names.push_back(m.tasks[t].name);
+      fmt::print("  robot {}: {}  travel {:.3f} m\n", m.robots[r].name,
+                 names.empty() ? std::string("(no task)") : join(names), p.cost.travel[r]);
+    }
+    fmt::print("  makespan {:.3f} m, total {:.3f} m\n", p.cost.makespan, p.cost.total);
+  }
+  if (!p.found) {
+    if (!o.json) fmt::print("no marked state is reachable from {}\n", from);
+    return 1;
+  }
+  return 0;
+}
+
+int run_run(const RunOptions& o) {
+  const sm::Mission m = impl::mission::load_mission(o.file);
+  impl::mission::RunOptions ro;
+  if (o.body == "kinematic") ro.body = impl::mission::BodyModel::kinematic;
+  ro.dt_s = o.dt;
+  ro.max_time_s = o.max_time;
+  ro.speed_m_per_s = o.speed;
+  std::unique_ptr<AtomicOutputFile> trace;
+  std::unique_ptr<impl::mission::TraceWriter> writer;
+  if (!o.trace.empty()) {
+    trace = std::make_unique<AtomicOutputFile>(o.trace);
+    writer = std::make_unique<impl::mission::TraceWriter>(trace->stream(), m, ro);
+  }
+  const impl::mission::RunResult r = impl::mission::run_mission(m, ro, writer.get());
+  if (trace) trace->commit();
+  std::vector<std::string> events;
+  for (const auto& e : r.events) events.push_back(e.event);
+  if (o.json) {
+    Json travel = Json::object();
+    for (std::size_t k = 0; k < m.robots.size(); ++k) travel[m.robots[k].name] = r.travel[k];
+    Json j = {{"mission", o.file},
+              {"body", o.body},
+              {"completed", r.completed},
+              {"reason", r.reason},
+              {"final_state", r.final_state},
+              {"events", events},
+              {"time", r.time_s},
+              {"travel", travel},
+              {"makespan_planned", r.makespan_planned},
+              {"replans", r.replans},
+              {"plan_cache_hits", r.plan_cache_hits}};
+    fmt::print("{}\n", j.dump(2));
+  } else {
+    for (const auto& e : r.events)
+      fmt::print("  t={:8.2f} s  {:<6} -> {}\n", e.time_s, e.event, e.state_after);
+    fmt::print("{} at t={:.2f} s in state {}\n", r.completed ? "mission complete" : r.reason,
+               r.time_s, r.final_state);
+    for (std::size_t k = 0; k < m.robots.size(); ++k)
+      fmt::print("  robot {}: travelled {:.3f} m\n", m.robots[k].name, r.travel[k]);
+    fmt::print("  planned makespan {:.3f} m\n", r.makespan_planned);
+  }
+  return r.completed ? 0 : 1;
+}
+
+}  // namespace
+
+void add_mission_verb(CLI::App& app, int& exit_code) {
+  auto* mission = app.add_subcommand("mission", "plan or run an FSM-supervised multi-robot mission");
+  mission->require_subcommand(1);
+
+  auto po = std::make_shared<PlanOptions>();
+  auto* plan = mission->add_subcommand(
+      "plan", "the events of least makespan, then least total travel, to a marked state");
+  plan->add_option("mission", po->file, "mission file (JSON)")->required();
+  plan->add_option("--from", po->from, "plan from this FSM state (robots at their starts)");
+  plan->add_option("--planner", po->planner, "exact (default) or thesis (the baseline)")
+      ->check(CLI::IsMember({"exact", "thesis"}));
+  plan->add_flag("--json", po->json, "print JSON");
+  plan->callback([po, &exit_code] { exit_code = guarded([&] { return run_plan(*po); }); });
+
+  auto ro = std::make_shared<RunOptions>();
+  auto* run = mission->add_subcommand("run", "run the mission in simulation under the supervisor");
+  run->add_option("mission", ro->file, "mission file (JSON)")->required();
+  run->add_option("--trace", ro->trace, "write the run as JSON Lines to this file");
+  run->add_option("--body", ro->body, "unicycle (controller + body, default) or kinematic")
+      ->check(CLI::IsMember({"unicycle", "kinematic"}));
+  run->add_option("--dt", ro->dt, "simulation step, s (default 0.05)")
+      ->check(CLI::Range(1e-4, 1.0));
+  run->add_option("--max-time", ro->max_time, "time limit, s (default 3600)")
+      ->check(CLI::Range(0.0, 1e7));
+  run->add_option("--speed", ro->speed, "kinematic body speed, m/s (default 0.5)")
+      ->check(CLI::Range(1e-3, 100.0));
+  run->add_flag("--json", ro->json, "print a JSON summary");
+  run->callback([ro, &exit_code] { exit_code = guarded([&] { return run_run(*ro); }); });
+}
+
+}  // namespace swarmcheck::cli

@@ -1,0 +1,205 @@
+// The exact mission planner: Pareto label setting, best first on (makespan, total).
+#include "impl/mission/planner.hpp"
+
+#include <algorithm>
+#include <cstring>
+#include <queue>
+#include <tuple>
+#include <unordered_map>
+
+#include "spec/util/input_error.hpp"
+
+namespace swarmcheck::impl::mission {
+
+namespace {
+
+using supervisor::EventId;
+using supervisor::StateId;
+namespace sm = spec::mission;
+
+constexpr std::uint32_t kNoLabel = UINT32_MAX;
+constexpr std::size_t kCacheMax = 4096;
+
+template <class T>
+void append_bytes(std::string& out, const T& v) {
+  char b[sizeof(T)];
+  std::memcpy(b, &v, sizeof(T));
+  out.append(b, sizeof(T));
+}
+
+struct Label {
+  StateId state;
+  std::uint32_t parent;
+  EventId event;
+  std::uint32_t length;
+  double makespan;
+  double total;
+};
+
+struct Key {  // (makespan, total, length, creation): smaller pops first
+  double makespan, total;
+  std::uint32_t length, id;
+  bool operator>(const Key& o) const {
+    return std::tie(makespan, total, length, id) > std::tie(o.makespan, o.total, o.length, o.id);
+  }
+};
+
+}  // namespace
+
+Planner::Planner(const sm::Mission& m) : mission_(&m), fsm_(supervisor::compile(m.fsm)) {
+  const StateId n = fsm_.state_count();
+  for (StateId s = 0; s < n; ++s) state_id_.emplace(fsm_.state_names[s], s);
+  marked_.assign(n, 0);
+  for (const auto& q : m.marked_states)
+    if (auto it = state_id_.find(q); it != state_id_.end()) marked_[it->second] = 1;
+  // Reverse reachability to the marked states.
+  std::vector<std::vector<StateId>> preds(n);
+  for (StateId s = 0; s < n; ++s)
+    for (auto k = fsm_.first_edge[s]; k < fsm_.first_edge[s + 1]; ++k)
+      preds[fsm_.edge_target[k]].push_back(s);
+  coaccessible_ = marked_;
+  std::vector<StateId> stack;
+  for (StateId s = 0; s < n; ++s)
+    if (marked_[s]) stack.push_back(s);
+  while (!stack.empty()) {
+    const StateId s = stack.back();
+    stack.pop_back();
+    for (const StateId p : preds[s])
+      if (!coaccessible_[p]) {
+        coaccessible_[p] = 1;
+        stack.push_back(p);
+      }
+  }
+  event_robot_.assign(fsm_.event_count(), -1);
+  event_task_.assign(fsm_.event_count(), -1);
+  for (EventId e = 0; e < fsm_.event_count(); ++e) {
+    const auto it = m.events.find(fsm_.event_names[e]);
+    if (it != m.events.end() && it->second.kind == sm::MeaningKind::task_start) {
+      event_robot_[e] = static_cast<std::int32_t>(it->second.robot);
+      event_task_[e] = static_cast<std::int32_t>(it->second.target);
+    }
+  }
+  const std::size_t t = m.tasks.size();
+  task_distance_.resize(t * t);
+  for (std::size_t a = 0; a < t; ++a)
+    for (std::size_t b = 0; b < t; ++b)
+      task_distance_[a * t + b] = sm::distance(m.tasks[a].at, m.tasks[b].at);
+}
+
+Plan Planner::plan(const PlanQuery& q) {
+  const std::size_t robots = mission_->robots.size();
+  if (q.positions.size() != robots || q.travel.size() != robots)
+    throw InputError("plan query", "expected one position and one travel per robot");
+  if (!state_id_.count(q.from))
+    throw InputError("plan query", "state \"" + q.from + "\" is not in " + mission_->fsm_name);
+  std::string key = q.from;
+  key.push_back('\0');
+  for (std::size_t r = 0; r < robots; ++r) {
+    append_bytes(key, q.positions[r][0]);
+    append_bytes(key, q.positions[r][1]);
+    append_bytes(key, q.travel[r]);
+  }
+  if (const auto it = cache_.find(key); it != cache_.end()) {
+    ++cache_hits_;
+    return it->second;
+  }
+  Plan p = search(q);
+  if (cache_.size() >= kCacheMax) cache_.clear();
+  cache_.emplace(std::move(key), p);
+  return p;
+}
+
+Plan Planner::search(const PlanQuery& q) {
+  const sm::Mission& m = *mission_;
+  const std::size_t robots = m.robots.size();
+  const std::size_t tasks = m.tasks.size();
+  const std::uint16_t here = static_cast<std::uint16_t>(tasks);  // "at the query position"
+  // Distance from each robot's query position to each task, for this query only.
+  std::vector<double> from_here(robots * tasks);
+  for (std::size_t r = 0; r < robots; ++r)
+    for (std::size_t t = 0; t < tasks; ++t)
+      from_here[r * tasks + t] = sm::distance(q.positions[r], m.tasks[t].at);
+
+  std::vector<Label> labels;
+  std::vector<std::uint16_t> pos;  // [label * robots + r]
+  std::vector<double> travel;      // [label * robots + r]
+  std::priority_queue<Key, std::vector<Key>, std::greater<>> open;
+  std::unordered_map<std::string, std::vector<std::uint32_t>> settled;
+
+  auto node_key = [&](StateId s, const std::uint16_t* ps) {
+    std::string k;
+    append_bytes(k, s);
+    k.append(reinterpret_cast<const char*>(ps), robots * sizeof(std::uint16_t));
+    return k;
+  };
+  auto dominated = [&](const std::string& k, const double* v) {
+    const auto it = settled.find(k);
+    if (it == settled.end()) return false;
+    for (const std::uint32_t w : it->second) {
+      const double* tw = &travel[std::size_t{w} * robots];
+      bool all_le = true;
+      for (std::size_t r = 0; r < robots && all_le; ++r) all_le = tw[r] <= v[r];
+      if (all_le) return true;
+    }
+    return false;
+  };
+  auto push = [&](Label l, const std::uint16_t* ps, const double* tv) {
+    const auto id = static_cast<std::uint32_t>(labels.size());
+    labels.push_back(l);
+    pos.insert(pos.end(), ps, ps + robots);
+    travel.insert(travel.end(), tv, tv + robots);
+    open.push(Key{l.makespan, l.total, l.length, id});
+  };
+
+  const StateId start = state_id_.at(q.from);
+  Plan out;
+  if (coaccessible_[start]) {
+    const sm::PlanCost c0 = sm::cost_of(q.travel);
+    std::vector<std::uint16_t> p0(robots, here);
+    push(Label{start, kNoLabel, 0, 0, c0.makespan, c0.total}, p0.data(), q.travel.data());
+  }
+  std::vector<std::uint16_t> ps(robots);
+  std::vector<double> tv(robots);
+  while (!open.empty()) {
+    const std::uint32_t id = open.top().id;
+    open.pop();
+    const Label l = labels[id];
+    const std::string k = node_key(l.state, &pos[std::size_t{id} * robots]);
+    if (dominated(k, &travel[std::size_t{id} * robots])) continue;
+    settled[k].push_back(id);
+    if (marked_[l.state]) {
+      out.found = true;
+      out.final_state = fsm_.state_names[l.state];
+      out.cost = sm::cost_of(std::vector<double>(travel.begin() + std::ptrdiff_t(id * robots),
+                                                 travel.begin() + std::ptrdiff_t((id + 1) * robots)));
+      for (std::uint32_t at = id; labels[at].parent != kNoLabel; at = labels[at].parent)
+        out.events.push_back(fsm_.event_names[labels[at].event]);
+      std::reverse(out.events.begin(), out.events.end());
+      break;
+    }
+    for (auto e = fsm_.first_edge[l.state]; e < fsm_.first_edge[l.state + 1]; ++e) {
+      const StateId target = fsm_.edge_target[e];
+      if (!coaccessible_[target]) continue;
+      const EventId ev = fsm_.edge_event[e];
+      std::copy_n(&pos[std::size_t{id} * robots], robots, ps.begin());
+      std::copy_n(&travel[std::size_t{id} * robots], robots, tv.begin());
+      if (event_robot_[ev] >= 0) {
+        const auto r = static_cast<std::size_t>(event_robot_[ev]);
+        const auto t = static_cast<std::uint16_t>(event_task_[ev]);
+        tv[r] += ps[r] == here ? from_here[r * tasks + t] : task_distance_[ps[r] * tasks + t];
+        ps[r] = t;
+      }
+      double makespan = 0.0, total = 0.0;
+      for (const double x : tv) {
+        makespan = std::max(makespan, x);
+        total += x;
+      }
+      if (dominated(node_key(target, ps.data()), tv.data())) continue;
+      push(Label{target, id, ev, l.length + 1, makespan, total}, ps.data(), tv.data());
+    }
+  }
+  labels_last_ = labels.size();
+  return out;
+}
+
+}  // namespace swarmcheck::impl::mission

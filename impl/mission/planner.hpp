@@ -1,0 +1,57 @@
+#pragma once
+// The exact mission planner (DESIGN.md B4): the plan of least makespan, then least total travel,
+// from any FSM state with the robots' current positions and committed travel.
+//
+// Method: best-first label setting over nodes (FSM state, each robot's position), a robot's
+// position being its query position or one of the tasks. A label carries the per-robot travel
+// vector; labels are popped in lexicographic (makespan, total, events, creation) order. Every
+// event adds a non-negative amount to one robot's travel, so a popped label's key is never
+// smaller than its parent's: the first label popped at a marked state is optimal. A label is
+// dropped when a label already settled at its node has travel <= it robot by robot (Pareto
+// dominance: every completion of the dropped label is matched by one no worse). Only states
+// from which a marked state is reachable are entered.
+//
+// Caching (the thesis's future work): the compiled FSM, the reverse reachability to the marked
+// states, the event meanings and the task-to-task distances are computed once per Planner; a
+// plan is remembered per exact query (state, positions and travel, by bits), so re-planning at a
+// choice whose inputs did not change is a lookup.
+#include <cstdint>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "impl/supervisor/fsm.hpp"
+#include "spec/mission/plan.hpp"
+
+namespace swarmcheck::impl::mission {
+
+using spec::mission::Plan;
+using spec::mission::PlanQuery;
+
+class Planner {
+ public:
+  explicit Planner(const spec::mission::Mission& m);
+
+  // Throws InputError when q.from is not a state of the FSM or the vectors have the wrong size.
+  Plan plan(const PlanQuery& q);
+
+  std::size_t cache_hits() const { return cache_hits_; }
+  std::size_t labels_last() const { return labels_last_; }  // labels created by the last search
+
+ private:
+  Plan search(const PlanQuery& q);
+
+  const spec::mission::Mission* mission_;
+  supervisor::Fsm fsm_;
+  std::map<std::string, supervisor::StateId> state_id_;
+  std::vector<std::uint8_t> marked_;
+  std::vector<std::uint8_t> coaccessible_;
+  std::vector<std::int32_t> event_robot_;  // [event] robot of a task start, -1 otherwise
+  std::vector<std::int32_t> event_task_;   // [event] task of a task start, -1 otherwise
+  std::vector<double> task_distance_;      // [t1 * tasks + t2]
+  std::map<std::string, Plan> cache_;
+  std::size_t cache_hits_ = 0;
+  std::size_t labels_last_ = 0;
+};
+
+}  // namespace swarmcheck::impl::mission

@@ -1,0 +1,263 @@
+// Execution of a mission in simulation: choice by the exact planner, motion, region entries.
+#include "impl/mission/run.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <deque>
+#include <optional>
+
+#include "impl/mission/planner.hpp"
+#include "spec/exploration/body.hpp"
+#include "spec/exploration/controller.hpp"
+#include "spec/mission/avoidance.hpp"
+#include "spec/mission/plan.hpp"
+
+namespace swarmcheck::impl::mission {
+
+namespace {
+
+namespace sm = spec::mission;
+namespace ex = swarmcheck::exploration;
+
+struct RobotSim {
+  sm::Point pos;
+  double theta = 0.0;
+  ex::ControllerState ctrl = ex::initial_controller();
+  std::deque<std::size_t> queue;        // tasks to drive to, front first
+  bool driving = false;                 // on a leg (the controller accepted its waypoint)
+  sm::Point leg{};                      // the leg's waypoint: the front task, or a detour point
+  bool leg_is_task = false;
+  std::optional<std::size_t> last_task; // the task it was sent to last
+  double travelled = 0.0;
+  bool blocked = false;
+};
+
+struct Proposal {
+  sm::Point pos;
+  double theta;
+  ex::ControllerState ctrl;
+  bool driving;
+  bool arrived;
+};
+
+Proposal propose(const RunOptions& o, const ex::RobotParams& rp, const RobotSim& r) {
+  const sm::Point target = r.leg;
+  Proposal p{r.pos, r.theta, r.ctrl, r.driving, false};
+  if (o.body == BodyModel::kinematic) {
+    const double d = sm::distance(r.pos, target);
+    const double step = o.speed_m_per_s * o.dt_s;
+    p.driving = true;
+    if (d <= step) {
+      p.pos = target;
+      p.arrived = true;
+    } else {
+      p.pos = {r.pos[0] + (target[0] - r.pos[0]) * (step / d),
+               r.pos[1] + (target[1] - r.pos[1]) * (step / d)};
+    }
+    return p;
+  }
+  ex::ControllerInputs in{ex::BodyState{r.pos[0], r.pos[1], r.theta}, target, r.driving ? 0 : 1};
+  p.ctrl = ex::controller_step(rp, r.ctrl, in);
+  const ex::BodyState b =
+      ex::body_step(rp, in.pose, p.ctrl.servo_left, p.ctrl.servo_right, o.dt_s);
+  p.pos = {b.x_m, b.y_m};
+  p.theta = b.theta_rad;
+  if (!r.driving && p.ctrl.on_destination_output == 0) p.driving = true;
+  if (r.driving && p.ctrl.on_destination_output == 1) p.arrived = true;
+  return p;
+}
+
+class Runner {
+ public:
+  Runner(const sm::Mission& m, const RunOptions& o, RunObserver* obs)
+      : m_(m), o_(o), obs_(obs), planner_(m), state_(m.initial_state) {
+    for (const auto& r : m.robots) {
+      RobotSim sim;
+      sim.pos = r.start;
+      robots_.push_back(sim);
+    }
+  }
+
+  RunResult run() {
+    for (const auto& e : sm::initial_entries(m_)) fire(e, 0.0);
+    const auto first = planner_.plan(query());
+    result_.makespan_planned = first.found ? first.cost.makespan : 0.0;
+    step_record(0.0);
+    double t = 0.0;
+    const auto steps_max = static_cast<long long>(o_.max_time_s / o_.dt_s);
+    for (long long k = 0;; ++k) {
+      if (!choose(t)) break;
+      if (sm::is_marked(m_, state_)) {
+        result_.completed = true;
+        result_.reason = "mission complete";
+        break;
+      }
+      if (k >= steps_max) {
+        result_.reason = fmt::format("time limit of {} s reached", o_.max_time_s);
+        break;
+      }
+      t = static_cast<double>(k + 1) * o_.dt_s;
+      if (!move(t)) {
+        result_.reason = deadlock_reason();
+        break;
+      }
+      step_record(t);
+    }
+    result_.final_state = state_;
+    result_.time_s = t;
+    for (const auto& r : robots_) result_.travel.push_back(r.travelled);
+    result_.plan_cache_hits = planner_.cache_hits();
+    return result_;
+  }
+
+ private:
+  sm::PlanQuery query() const {
+    sm::PlanQuery q;
+    q.from = state_;
+    for (const auto& r : robots_) {
+      double to_go = 0.0;
+      sm::Point at = r.pos;
+      for (const auto t : r.queue) {
+        to_go += sm::distance(at, m_.tasks[t].at);
+        at = m_.tasks[t].at;
+      }
+      q.positions.push_back(r.last_task ? m_.tasks[*r.last_task].at : r.pos);
+      q.travel.push_back(to_go);
+    }
+    return q;
+  }
+
+  bool has_controllable() const {
+    for (const auto& e : spec::supervisor::enabled(m_.fsm, state_))
+      if (m_.fsm.events.at(e).controllable) return true;
+    return false;
+  }
+
+  // Issues the planned controllable events; false when the run must stop.
+  bool choose(double t) {
+    while (!sm::is_marked(m_, state_) && has_controllable()) {
+      const sm::Plan p = planner_.plan(query());
+      ++result_.replans;
+      if (!p.found) {
+        result_.reason = "no marked state is reachable from state " + state_;
+        return false;
+      }
+      const std::string& e = p.events.front();
+      if (!m_.fsm.events.at(e).controllable) break;
+      const sm::Meaning& mn = m_.events.at(e);
+      robots_[mn.robot].queue.push_back(mn.target);
+      robots_[mn.robot].last_task = mn.target;
+      fire(e, t);
+    }
+    return true;
+  }
+
+  // One step of motion; false when nothing could move and no event fired (deadlock).
+  bool move(double t) {
+    bool progress = false;
+    for (std::size_t i = 0; i < robots_.size(); ++i) {
+      RobotSim& r = robots_[i];
+      r.blocked = false;
+      if (r.queue.empty()) continue;
+      if (!r.driving) start_leg(i);
+      const Proposal p = propose(o_, rp_, r);
+      const auto entries = sm::entry_events(m_, i, r.pos, p.pos);
+      if (!sm::fire_all(m_, state_, entries)) {
+        r.blocked = true;
+        continue;
+      }
+      progress = true;
+      r.travelled += sm::distance(r.pos, p.pos);
+      r.pos = p.pos;
+      r.theta = p.theta;
+      r.ctrl = p.ctrl;
+      r.driving = p.driving;
+      if (p.arrived) {
+        if (r.leg_is_task) r.queue.pop_front();
+        r.driving = false;
+      }
+      for (const auto& e : entries) fire(e, t);
+    }
+    return progress;
+  }
+
+  // The next leg of robot i: its front task, unless the current plan has the robot enter a
+  // region first that does not contain that task and that it is not in; then the point of that
+  // region nearest to it, a margin inside (so that the FSM's expected entry happens).
+  void start_leg(std::size_t i) {
+    RobotSim& r = robots_[i];
+    const sm::Point task = m_.tasks[r.queue.front()].at;
+    r.leg = task;
+    r.leg_is_task = true;
+    const sm::Plan p = planner_.plan(query());
+    for (const auto& e : p.events) {
+      const sm::Meaning& mn = m_.events.at(e);
+      if (mn.robot != i) continue;
+      if (mn.kind != sm::MeaningKind::region_entry) break;
+      const sm::Region& g = m_.regions[mn.target];
+      if (sm::inside(g, task) || sm::inside(g, r.pos)) break;
+      sm::Point detour{};
+      for (std::size_t k = 0; k < 2; ++k) {
+        const double margin = std::min(0.5, (g.hi[k] - g.lo[k]) / 4);
+        detour[k] = std::clamp(r.pos[k], g.lo[k] + margin, g.hi[k] - margin);
+      }
+      r.leg = detour;
+      r.leg_is_task = false;
+      break;
+    }
+  }
+
+  std::string deadlock_reason() const {
+    std::vector<std::string> why;
+    for (std::size_t i = 0; i < robots_.size(); ++i)
+      if (robots_[i].blocked) {
+        const Proposal p = propose(o_, rp_, robots_[i]);
+        for (const auto& e : sm::entry_events(m_, i, robots_[i].pos, p.pos))
+          if (!spec::supervisor::successor(m_.fsm, state_, e))
+            why.push_back(fmt::format("robot {} waits to fire {}", m_.robots[i].name, e));
+      }
+    std::string enabled;
+    for (const auto& e : spec::supervisor::enabled(m_.fsm, state_))
+      enabled += (enabled.empty() ? "" : ", ") + e;
+    std::string out = fmt::format("deadlock in state {}: no robot can move (enabled events: {})",
+                                  state_, enabled.empty() ? "none" : enabled);
+    for (const auto& w : why) out += "; " + w;
+    return out;
+  }
+
+  void fire(const std::string& e, double t) {
+    state_ = *spec::supervisor::successor(m_.fsm, state_, e);
+    const sm::Meaning& mn = m_.events.at(e);
+    EventRecord rec{t, e, m_.robots[mn.robot].name, m_.fsm.events.at(e).controllable, state_};
+    if (obs_) obs_->on_event(rec);
+    result_.events.push_back(std::move(rec));
+  }
+
+  void step_record(double t) {
+    if (!obs_) return;
+    StepRecord s{t, state_, {}, {}};
+    for (const auto& r : robots_) {
+      s.positions.push_back(r.pos);
+      s.blocked.push_back(r.blocked);
+    }
+    obs_->on_step(s);
+  }
+
+  const sm::Mission& m_;
+  RunOptions o_;
+  RunObserver* obs_;
+  ex::RobotParams rp_{};
+  Planner planner_;
+  std::string state_;
+  std::vector<RobotSim> robots_;
+  RunResult result_;
+};
+
+}  // namespace
+
+RunResult run_mission(const sm::Mission& m, const RunOptions& o, RunObserver* observer) {
+  return Runner(m, o, observer).run();
+}
+
+}  // namespace swarmcheck::impl::mission

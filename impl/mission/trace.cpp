@@ -1,0 +1,88 @@
+// Writing and reading mission traces (JSON Lines).
+#include "impl/mission/trace.hpp"
+
+#include <istream>
+#include <nlohmann/json.hpp>
+#include <ostream>
+
+#include "spec/util/input_error.hpp"
+
+namespace swarmcheck::impl::mission {
+
+namespace {
+using Json = nlohmann::ordered_json;
+}
+
+TraceWriter::TraceWriter(std::ostream& out, const spec::mission::Mission& m, const RunOptions& o)
+    : out_(out) {
+  Json names = Json::array();
+  for (const auto& r : m.robots) names.push_back(r.name);
+  const Json h = {{"type", "header"},
+                  {"format", "swarmcheck-mission-trace"},
+                  {"version", 1},
+                  {"mission", m.source},
+                  {"fsm", m.fsm_name},
+                  {"initial_state", m.initial_state},
+                  {"robots", names},
+                  {"body", o.body == BodyModel::kinematic ? "kinematic" : "unicycle"},
+                  {"dt", o.dt_s}};
+  out_ << h.dump() << '\n';
+}
+
+void TraceWriter::on_event(const EventRecord& e) {
+  const Json j = {{"type", "event"},  {"t", e.time_s},
+                  {"event", e.event}, {"robot", e.robot},
+                  {"kind", e.controllable ? "c" : "uc"}, {"state", e.state_after}};
+  out_ << j.dump() << '\n';
+}
+
+void TraceWriter::on_step(const StepRecord& s) {
+  Json pos = Json::array();
+  for (const auto& p : s.positions) pos.push_back({p[0], p[1]});
+  Json blocked = Json::array();
+  for (const bool b : s.blocked) blocked.push_back(b);
+  const Json j = {{"type", "step"}, {"t", s.time_s}, {"state", s.state},
+                  {"positions", pos}, {"blocked", blocked}};
+  out_ << j.dump() << '\n';
+}
+
+MissionTrace read_trace(std::istream& in, const std::string& source) {
+  MissionTrace t;
+  std::string line;
+  std::size_t n = 0;
+  while (std::getline(in, line)) {
+    ++n;
+    if (line.empty()) continue;
+    const std::string where = source + ":" + std::to_string(n);
+    try {
+      const Json j = Json::parse(line);
+      const std::string type = j.at("type").get<std::string>();
+      if (type == "header") {
+        t.initial_state = j.at("initial_state").get<std::string>();
+        t.robots = j.at("robots").get<std::vector<std::string>>();
+      } else if (type == "event") {
+        TraceEntry e;
+        e.is_event = true;
+        e.event = EventRecord{j.at("t").get<double>(), j.at("event").get<std::string>(),
+                              j.at("robot").get<std::string>(),
+                              j.at("kind").get<std::string>() == "c",
+                              j.at("state").get<std::string>()};
+        t.entries.push_back(std::move(e));
+      } else if (type == "step") {
+        TraceEntry e;
+        e.step.time_s = j.at("t").get<double>();
+        e.step.state = j.at("state").get<std::string>();
+        for (const auto& p : j.at("positions")) e.step.positions.push_back({p.at(0).get<double>(), p.at(1).get<double>()});
+        for (const auto& b : j.at("blocked")) e.step.blocked.push_back(b.get<bool>());
+        t.entries.push_back(std::move(e));
+      } else {
+        throw InputError(where, "unknown record type \"" + type + "\"");
+      }
+    } catch (const nlohmann::json::exception& e) {
+      throw InputError(where, std::string("malformed trace record: ") + e.what());
+    }
+  }
+  return t;
+}
+
+}  // namespace swarmcheck::impl::mission

@@ -1,0 +1,42 @@
+#pragma once
+// The mission trace, JSON Lines: a header, then, in the order they happen, one record per
+// event and one per simulation step (after time 0's events, then after every step).
+//   {"type":"header","format":"swarmcheck-mission-trace","version":1,"mission":..,"fsm":..,
+//    "initial_state":..,"robots":[names],"body":"unicycle"|"kinematic","dt":..}
+//   {"type":"event","t":..,"event":"a3s","robot":"A","kind":"c"|"uc","state":<state after>}
+//   {"type":"step","t":..,"state":..,"positions":[[x,y],..],"blocked":[false,..]}
+// Doubles are written so that they read back to the same bits.
+#include <iosfwd>
+#include <string>
+#include <vector>
+
+#include "impl/mission/run.hpp"
+
+namespace swarmcheck::impl::mission {
+
+class TraceWriter : public RunObserver {
+ public:
+  TraceWriter(std::ostream& out, const spec::mission::Mission& m, const RunOptions& o);
+  void on_event(const EventRecord& e) override;
+  void on_step(const StepRecord& s) override;
+
+ private:
+  std::ostream& out_;
+};
+
+struct TraceEntry {
+  bool is_event = false;
+  EventRecord event;  // when is_event
+  StepRecord step;    // otherwise
+};
+
+struct MissionTrace {
+  std::string initial_state;
+  std::vector<std::string> robots;
+  std::vector<TraceEntry> entries;
+};
+
+// Reads a trace; a malformed line is an InputError at "source:line".
+MissionTrace read_trace(std::istream& in, const std::string& source);
+
+}  // namespace swarmcheck::impl::mission

@@ -1,0 +1,130 @@
+// Reading the mission file's JSON into MissionDecl: syntax, types, unknown and missing keys.
+#include "spec/mission/mission.hpp"
+
+#include <cmath>
+#include <initializer_list>
+
+#include "spec/util/hana_json.hpp"
+#include "spec/util/input_error.hpp"
+
+namespace swarmcheck::spec::mission {
+
+namespace {
+
+using json_io::Json;
+
+// Every key in `keys` must be present in object `j` (its type is checked by from_json after).
+void require_keys(const Json& j, const std::string& path,
+                  std::initializer_list<std::pair<const char*, const char*>> keys) {
+  if (!j.is_object())
+    throw InputError(path.empty() ? "(top level)" : path,
+                     "expected an object, got " + json_io::type_name(j));
+  for (const auto& [key, what] : keys)
+    if (!j.contains(key)) throw InputError(json_io::join_key(path, key), std::string("missing (") + what + ")");
+}
+
+void require_each(const Json& j, const char* list,
+                  std::initializer_list<std::pair<const char*, const char*>> keys) {
+  if (!j.contains(list) || !j[list].is_array()) return;  // from_json reports the type
+  for (std::size_t i = 0; i < j[list].size(); ++i)
+    require_keys(j[list][i], json_io::join_index(list, i), keys);
+}
+
+void require_finite(const Point& p, const std::string& path) {
+  if (!std::isfinite(p[0]) || !std::isfinite(p[1]))
+    throw InputError(path, "expected finite coordinates in metres");
+}
+
+MissionDecl decl_from_json(const Json& j) {
+  require_keys(j, "", {{"fsm", "the path of the supervisor's .fsm file"},
+                       {"initial_state", "the FSM state the mission starts in"},
+                       {"marked_states", "the list of FSM states that complete the mission"},
+                       {"robots", "a list of {\"name\", \"start\": [x, y]}"},
+                       {"tasks", "a list of {\"name\", \"at\": [x, y]}"},
+                       {"events", "an object giving each FSM event its meaning"}});
+  require_each(j, "robots", {{"name", "the robot's name"}, {"start", "its start position [x, y]"}});
+  require_each(j, "tasks", {{"name", "the task's name"}, {"at", "its position [x, y]"}});
+  require_each(j, "regions", {{"name", "the region's name"},
+                              {"corners", "two opposite corners [[x1, y1], [x2, y2]]"}});
+  MissionDecl d;
+  Json rest = j;
+  rest.erase("events");
+  json_io::from_json(rest, "", d);
+  const Json& ev = j["events"];
+  if (!ev.is_object())
+    throw InputError("events", "expected an object keyed by event name, got " +
+                                   json_io::type_name(ev));
+  for (auto it = ev.begin(); it != ev.end(); ++it) {
+    const std::string path = "events." + it.key();
+    require_keys(it.value(), path, {{"robot", "the robot the event belongs to"}});
+    MeaningDecl m;
+    json_io::from_json(it.value(), path, m);
+    d.events.emplace(it.key(), m);
+  }
+  for (std::size_t i = 0; i < d.robots.size(); ++i)
+    require_finite(d.robots[i].start, json_io::join_index("robots", i) + ".start");
+  for (std::size_t i = 0; i < d.tasks.size(); ++i)
+    require_finite(d.tasks[i].at, json_io::join_index("tasks", i) + ".at");
+  for (std::size_t i = 0; i < d.regions.size(); ++i)
+    for (std::size_t k = 0; k < 2; ++k)
+      require_finite(d.regions[i].corners[k],
+                     json_io::join_index(json_io::join_index("regions", i) + ".corners", k));
+  return d;
+}
+
+}  // namespace
+
+MissionDecl parse_mission_text(const std::string& text, const std::string& file) {
+  Json j;
+  try {
+    j = Json::parse(text);
+  } catch (const nlohmann::json::parse_error& e) {
+    std::size_t line = 1, col = 1;
+    for (std::size_t k = 0; k + 1 < e.byte && k < text.size(); ++k) {
+      if (text[k] == '\n') {
+        ++line;
+        col = 1;
+      } else {
+        ++col;
+      }
+    }
+    std::string reason = e.what();
+    if (auto pos = reason.find(": ", reason.find("column")); pos != std::string::npos)
+      reason = reason.substr(pos + 2);
+    throw InputError(file + ":" + std::to_string(line) + ":" + std::to_string(col),
+                     "not valid JSON: " + reason);
+  }
+  try {
+    return decl_from_json(j);
+  } catch (const InputError& e) {
+    throw InputError(file + ": " + e.where(), std::string(e.what()).substr(e.where().size() + 2));
+  }
+}
+
+double distance(const Point& a, const Point& b) {
+  const double dx = b[0] - a[0];
+  const double dy = b[1] - a[1];
+  return std::sqrt(dx * dx + dy * dy);
+}
+
+bool inside(const Region& g, const Point& p) {
+  return g.lo[0] < p[0] && p[0] < g.hi[0] && g.lo[1] < p[1] && p[1] < g.hi[1];
+}
+
+const std::string* event_for(const Mission& m, MeaningKind kind, std::size_t robot,
+                             std::size_t target) {
+  for (const auto& [name, meaning] : m.events)
+    if (meaning == Meaning{kind, robot, target}) return &name;
+  return nullptr;
+}
+
+std::vector<std::string> initial_entries(const Mission& m) {
+  std::vector<std::string> out;
+  for (std::size_t r = 0; r < m.robots.size(); ++r)
+    for (std::size_t g = 0; g < m.regions.size(); ++g)
+      if (inside(m.regions[g], m.robots[r].start))
+        if (const auto* e = event_for(m, MeaningKind::region_entry, r, g)) out.push_back(*e);
+  return out;
+}
+
+}  // namespace swarmcheck::spec::mission
