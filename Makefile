@@ -22,12 +22,16 @@ test-debug: deps
 	@cmake --build --preset debug -j $(JOBS)
 	ctest --preset debug -j $(JOBS)
 
+# Google Benchmark, impl against model as a ratio. bench/results.json is system A's
+# (bench_exploration); the other systems write bench/results-<name>.json.
 bench: deps
 	@cmake --preset bench >/dev/null
 	@cmake --build --preset bench -j $(JOBS)
-	@if ls build-bench/bin/bench_* >/dev/null 2>&1; then \
-	  for b in build-bench/bin/bench_*; do $$b --benchmark_out=bench/results.json --benchmark_out_format=json; done; \
-	else echo "bench: no benchmarks yet"; fi
+	build-bench/bin/bench_exploration --benchmark_out=bench/results.json --benchmark_out_format=json
+	@for b in build-bench/bin/bench_*; do \
+	  name=$${b##*/bench_}; [ "$$name" = exploration ] && continue; \
+	  $$b --benchmark_out=bench/results-$$name.json --benchmark_out_format=json; \
+	done
 
 clean:
 	rm -rf build build-debug build-bench

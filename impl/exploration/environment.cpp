@@ -15,6 +15,8 @@ using exploration::RuleSet;
 namespace {
 // Deposit amounts are tabulated by offset when the window has at most this many cells.
 constexpr int64_t kDepositTableMax = 1 << 16;
+constexpr std::size_t kPrefetchAhead = 8;   // robots
+constexpr int32_t kPrefetchRangeMax = 2;    // s_range up to which windows are prefetched
 }  // namespace
 
 Environment::Environment(const exploration::Scenario& s, const ExplorationOptions& options)
@@ -22,6 +24,7 @@ Environment::Environment(const exploration::Scenario& s, const ExplorationOption
       options_(options),
       grid_(s),
       eta_term_(std::pow(s.params.eta, s.params.lambda)),
+      thesis_best_start_(std::pow(1000.0, s.params.phi) * eta_term_),
       handshake_(exploration::initial_handshake()) {
   const int64_t side = 2 * int64_t{std::min(s.params.s_range, s.map_size)} + 1;
   if (side * side <= kDepositTableMax) {
@@ -67,7 +70,11 @@ void Environment::step(bool all_arrived) {
     if (grid_.dense()) grid_.evaporate_dense();
   }
   if (planning) {
-    for (const CellIndex& c : deposit_centre_) deposit_around(c);
+    const std::size_t n = deposit_centre_.size();
+    for (std::size_t r = 0; r < n; ++r) {
+      if (r + kPrefetchAhead < n) prefetch_window(deposit_centre_[r + kPrefetchAhead]);
+      deposit_around(deposit_centre_[r]);
+    }
     ++planning_steps_;
   }
   update_progress();
@@ -84,9 +91,21 @@ void Environment::plan() {
     plan_sequential();
 }
 
+void Environment::prefetch_window(CellIndex c) const {
+  if (sc_.params.s_range > kPrefetchRangeMax) return;
+  const exploration::Window w = exploration::window_around(c, sc_.params.s_range, sc_.map_size);
+  for (int32_t i = w.i_lo; i <= w.i_hi; ++i)
+    grid_.prefetch(grid_.index(i, w.j_lo), static_cast<std::size_t>(w.j_hi - w.j_lo + 1));
+}
+
 void Environment::plan_sequential() {
   WindowScratch w;
-  for (int32_t r = 0; r < static_cast<int32_t>(cell_.size()); ++r) visited_ += plan_robot(r, w);
+  const std::size_t n = cell_.size();
+  for (std::size_t r = 0; r < std::min(n, kPrefetchAhead); ++r) prefetch_window(cell_[r]);
+  for (std::size_t r = 0; r < n; ++r) {
+    if (r + kPrefetchAhead < n) prefetch_window(cell_[r + kPrefetchAhead]);
+    visited_ += plan_robot(static_cast<int32_t>(r), w);
+  }
 }
 
 // The candidates of a robot in c: its window without c, raster order, current pheromone.
@@ -124,10 +143,10 @@ int32_t Environment::choose_thesis(WindowScratch& w) const {
   std::vector<double>& prob_n = w.key;
   prob_n.resize(n);
   for (std::size_t k = 0; k < n; ++k) {
-    prob_n[k] = std::pow(w.tau[k], sc_.params.phi) * eta_term_;
+    prob_n[k] = key(w.tau[k]) * eta_term_;
     sum += prob_n[k];
   }
-  double best_value = std::pow(1000.0, sc_.params.phi) * eta_term_ / sum;
+  double best_value = thesis_best_start_ / sum;
   int32_t best = -1;
   for (std::size_t k = 0; k < n; ++k) {
     const double prob = prob_n[k] / sum;
@@ -141,11 +160,11 @@ int32_t Environment::choose_thesis(WindowScratch& w) const {
 
 int32_t Environment::choose_deterministic(const WindowScratch& w) const {
   int32_t best = 0;
-  double best_key = std::pow(w.tau[0], sc_.params.phi);
+  double best_key = key(w.tau[0]);
   for (std::size_t k = 1; k < w.tau.size(); ++k) {
-    const double key = std::pow(w.tau[k], sc_.params.phi);
-    if (improves(key, best_key)) {
-      best_key = key;
+    const double kk = key(w.tau[k]);
+    if (improves(kk, best_key)) {
+      best_key = kk;
       best = static_cast<int32_t>(k);
     }
   }
@@ -153,19 +172,19 @@ int32_t Environment::choose_deterministic(const WindowScratch& w) const {
 }
 
 int32_t Environment::choose_stochastic(int32_t r, WindowScratch& w) const {
-  std::vector<double>& key = w.key;
-  key.resize(w.tau.size());
-  double min_key = key[0] = std::pow(w.tau[0], sc_.params.phi);
+  std::vector<double>& keys = w.key;
+  keys.resize(w.tau.size());
+  double min_key = keys[0] = key(w.tau[0]);
   for (std::size_t k = 1; k < w.tau.size(); ++k) {
-    key[k] = std::pow(w.tau[k], sc_.params.phi);
-    min_key = std::fmin(min_key, key[k]);
+    keys[k] = key(w.tau[k]);
+    min_key = std::fmin(min_key, keys[k]);
   }
   uint32_t ties = 0;
-  for (double k : key) ties += k == min_key ? 1U : 0U;
+  for (double k : keys) ties += k == min_key ? 1U : 0U;
   const uint64_t draw = exploration::rng_key(sc_.seed, tick_, r, exploration::Purpose::tie_break);
   uint32_t pick = exploration::uniform_index(draw, ties);
-  for (std::size_t k = 0; k < key.size(); ++k)
-    if (key[k] == min_key && pick-- == 0) return static_cast<int32_t>(k);
+  for (std::size_t k = 0; k < keys.size(); ++k)
+    if (keys[k] == min_key && pick-- == 0) return static_cast<int32_t>(k);
   SWARM_DEMAND(false);
   return -1;
 }

@@ -2,6 +2,7 @@
 // The optimised Environment: the same step as model/exploration/environment_model.hpp (see
 // spec/SPEC.md section 6), computed with a lazy grid, incremental counts and, for many robots,
 // parallel decisions by independent groups.
+#include <cmath>
 #include <cstdint>
 #include <optional>
 #include <vector>
@@ -44,6 +45,9 @@ class Environment {
  private:
   void plan();
   void plan_sequential();
+  // Prefetches the rows of c's window (small windows only): robots are handled in index order,
+  // so the windows of the next few are known before they are needed.
+  void prefetch_window(exploration::CellIndex c) const;
   void plan_grouped();
   // One robot's decision and move; returns how many cells it newly marked visited.
   int64_t plan_robot(int32_t r, WindowScratch& w);
@@ -55,12 +59,19 @@ class Environment {
   int64_t move(int32_t r, exploration::CellIndex to, bool mark);
   void deposit_around(exploration::CellIndex centre);
   double deposit_amount(int32_t di, int32_t dj) const;
+  // pow(tau, phi), with the exact shortcuts pow(x, 1) = x and pow(x, 0) = 1 (IEEE 754 / C Annex F).
+  double key(double tau) const {
+    if (sc_.params.phi == 1.0) return tau;
+    if (sc_.params.phi == 0.0) return 1.0;
+    return std::pow(tau, sc_.params.phi);
+  }
   void update_progress();
 
   exploration::Scenario sc_;
   ExplorationOptions options_;
   LazyGrid grid_;
   double eta_term_;                     // pow(eta, lambda), the same for every cell
+  double thesis_best_start_;            // pow(1000, phi) * eta_term_ (divided by sum per robot)
   std::vector<double> deposit_table_;   // amounts by (di, dj) when the window is small
   int32_t deposit_radius_ = 0;
   std::vector<exploration::CellIndex> cell_;

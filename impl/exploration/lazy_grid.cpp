@@ -24,15 +24,15 @@ LazyGrid::LazyGrid(const exploration::Scenario& s)
     decay_.pow2[0] = f;
     for (std::size_t i = 1; i < decay_.pow2.size(); ++i) decay_.pow2[i] = decay_.pow2[i - 1] * decay_.pow2[i - 1];
   }
-  const std::size_t cells = static_cast<std::size_t>(n_) * static_cast<std::size_t>(n_);
-  value_.assign(cells, 0.0);
-  written_.assign(cells, 0);
-  flags_.assign(cells, 0);
-  occupant_.assign(cells, -1);
+  cells_ = HugePageArray<CellData>(static_cast<std::size_t>(n_) * static_cast<std::size_t>(n_), CellData{});
+  decay_cache_.resize(static_cast<std::size_t>(kDecayCacheSize));
+  for (int64_t k = 0; k < kDecayCacheSize; ++k)
+    decay_cache_[static_cast<std::size_t>(k)] = exploration::decay_factor(decay_, k);
 }
 
 void LazyGrid::evaporate_dense() {
-  for (double& v : value_) {
+  for (CellData& c : cells_) {
+    double& v = c.value;
     if constexpr (kMutant == 4)
       v -= ertu_dt_ * v;
     else
@@ -42,7 +42,7 @@ void LazyGrid::evaporate_dense() {
 
 uint64_t LazyGrid::digest(int64_t tick) const {
   exploration::Fnv1a h;
-  for (std::size_t k = 0; k < value_.size(); ++k) h.add(current(k, tick));
+  for (std::size_t k = 0; k < cells_.size(); ++k) h.add(current(k, tick));
   return h.h;
 }
 

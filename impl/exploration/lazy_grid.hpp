@@ -4,9 +4,13 @@
 // spec's decay function F (spec/exploration/decay.hpp), evaluated only when the cell is read or
 // written. The thesis rule set's literal update cannot be expressed through F, so it stays
 // dense: evaporate_dense() every step, and `value` is always current.
+// A cell's fields sit together (one 24-byte record) so that a robot's window costs a few cache
+// lines even on maps far larger than the cache; F(k) for small ages comes from a table filled by
+// the spec's own decay_factor, so the bits are the same.
 #include <cstdint>
 #include <vector>
 
+#include "impl/exploration/huge_page_array.hpp"
 #include "impl/exploration/mutants.hpp"
 #include "spec/exploration/decay.hpp"
 #include "spec/exploration/types.hpp"
@@ -26,41 +30,64 @@ class LazyGrid {
   int32_t size() const { return n_; }
 
   double current(std::size_t k, int64_t tick) const {
-    if (dense_) return value_[k];
-    return value_[k] * exploration::decay_factor(decay_, tick - written_[k]);
+    const CellData& c = cells_[k];
+    if (dense_ || c.value == 0.0) return c.value;   // +0 * F(k) = +0: F(k) >= 0 is finite
+    return c.value * decay(tick - c.written);
+  }
+  // F(age), bit for bit the spec's: F multiplies P[i] over the set bits of age in increasing i,
+  // so the table's F(age mod 4096) is exactly the product so far, continued over the high bits.
+  double decay(int64_t age) const {
+    double acc = decay_cache_[static_cast<std::size_t>(age & (kDecayCacheSize - 1))];
+    auto bits = static_cast<uint64_t>(age) >> kDecayCacheBits;
+    for (std::size_t i = kDecayCacheBits; bits != 0; ++i, bits >>= 1)
+      if (bits & 1U) acc *= decay_.pow2[i];
+    return acc;
   }
   void deposit(std::size_t k, int64_t tick, double amount) {
-    value_[k] = current(k, tick) + amount;
-    written_[k] = tick;
+    cells_[k].value = current(k, tick) + amount;
+    cells_[k].written = tick;
   }
   // thesis rule set: the literal per-step update on every cell.
   void evaporate_dense();
   bool dense() const { return dense_; }
 
-  bool visited(std::size_t k) const { return flags_[k] & kVisited; }
-  bool obstacle(std::size_t k) const { return flags_[k] & kObstacle; }
+  bool visited(std::size_t k) const { return cells_[k].flags & kVisited; }
+  bool obstacle(std::size_t k) const { return cells_[k].flags & kObstacle; }
   // Marks a cell visited; true if it was not before.
   bool mark_visited(std::size_t k) {
-    if (flags_[k] & kVisited) return false;
-    flags_[k] = static_cast<uint8_t>(flags_[k] | kVisited);
+    if (cells_[k].flags & kVisited) return false;
+    cells_[k].flags = static_cast<uint8_t>(cells_[k].flags | kVisited);
     return true;
   }
-  void set_obstacle(std::size_t k) { flags_[k] = static_cast<uint8_t>(flags_[k] | kObstacle); }
-  int32_t occupant(std::size_t k) const { return occupant_[k]; }
-  void set_occupant(std::size_t k, int32_t r) { occupant_[k] = r; }
-  bool blocked(std::size_t k) const { return (flags_[k] & kObstacle) || occupant_[k] >= 0; }
+  void set_obstacle(std::size_t k) { cells_[k].flags = static_cast<uint8_t>(cells_[k].flags | kObstacle); }
+  int32_t occupant(std::size_t k) const { return cells_[k].occupant; }
+  void set_occupant(std::size_t k, int32_t r) { cells_[k].occupant = r; }
+  bool blocked(std::size_t k) const { return (cells_[k].flags & kObstacle) || cells_[k].occupant >= 0; }
+
+  // Asks the memory system for cells [k, k + count) ahead of use (no effect on results).
+  void prefetch(std::size_t k, std::size_t count) const {
+    __builtin_prefetch(&cells_[k]);
+    __builtin_prefetch(&cells_[k + count - 1]);
+  }
 
   uint64_t digest(int64_t tick) const;   // FNV-1a over every current value, raster order
 
  private:
+  struct CellData {
+    double value = 0.0;      // pheromone as written at `written`
+    int64_t written = 0;     // tick of the last write
+    int32_t occupant = -1;   // robot index or -1
+    uint8_t flags = 0;       // kVisited | kObstacle
+  };
+  static constexpr int kDecayCacheBits = 12;
+  static constexpr int64_t kDecayCacheSize = int64_t{1} << kDecayCacheBits;
+
   int32_t n_;
   bool dense_;
   double ertu_dt_;
   exploration::DecayTable decay_;
-  std::vector<double> value_;
-  std::vector<int64_t> written_;
-  std::vector<uint8_t> flags_;
-  std::vector<int32_t> occupant_;
+  std::vector<double> decay_cache_;   // F(k) for k < kDecayCacheSize
+  HugePageArray<CellData> cells_;
 };
 
 }  // namespace swarmcheck::impl

@@ -1,0 +1,133 @@
+// bench_exploration: the optimised library against the reference model, in one run.
+//
+// Each benchmark iteration is one master step of an already built simulation (construction is
+// not timed). abstract: every step is a planning step (robot decisions/s); cosim: Environment +
+// controllers + bodies at dt = 0.1 s (x_realtime = simulated seconds per wall second). Both
+// engines run on one thread. At the end a table gives model time / impl time per size.
+#include <benchmark/benchmark.h>
+
+#include <cstdio>
+#include <map>
+#include <memory>
+#include <numeric>
+#include <string>
+#include <tuple>
+
+#include "model/exploration/exploration_model.hpp"
+#include "spec/exploration/rng.hpp"
+#include "spec/exploration/scenario.hpp"
+#include "swarmcheck/exploration.hpp"
+
+namespace {
+
+using namespace swarmcheck;
+using namespace swarmcheck::exploration;
+
+// R robots on distinct cells of an N x N map, chosen by a seeded partial shuffle.
+Scenario bench_scenario(Mode mode, int32_t robots, int32_t map_size) {
+  Scenario s = default_scenario();
+  s.mode = mode;
+  s.map_size = map_size;
+  s.obstacles.clear();
+  s.robots.clear();
+  s.max_steps = int64_t{1} << 40;
+  const int64_t cells = int64_t{map_size} * map_size;
+  std::map<int64_t, int64_t> swapped;   // sparse Fisher-Yates over [0, cells)
+  for (int64_t k = 0; k < robots; ++k) {
+    const int64_t j = k + static_cast<int64_t>(splitmix64(static_cast<uint64_t>(k) + 7) % static_cast<uint64_t>(cells - k));
+    const int64_t at_j = swapped.count(j) ? swapped[j] : j;
+    const int64_t at_k = swapped.count(k) ? swapped[k] : k;
+    swapped[j] = at_k;
+    s.robots.push_back({static_cast<double>(at_j / map_size) + 0.5, static_cast<double>(at_j % map_size) + 0.5});
+  }
+  validate(s);
+  return s;
+}
+
+ExplorationOptions one_thread() {
+  ExplorationOptions o;
+  o.parallel_min_robots = 1 << 30;
+  o.parallel_min_bodies = 1 << 30;
+  return o;
+}
+
+template <class Sim>
+void run_steps(benchmark::State& state, Sim& sim, const Scenario& s) {
+  for (auto _ : state) sim.step();
+  const double steps = static_cast<double>(state.iterations());
+  state.counters["steps_per_s"] = benchmark::Counter(steps, benchmark::Counter::kIsRate);
+  state.counters["decisions_per_s"] =
+      benchmark::Counter(s.mode == Mode::abstract ? steps * static_cast<double>(s.robots.size()) : 0.0,
+                         benchmark::Counter::kIsRate);
+  state.counters["x_realtime"] = benchmark::Counter(steps * s.params.step_size, benchmark::Counter::kIsRate);
+}
+
+void bench_impl(benchmark::State& state, Mode mode, int32_t robots, int32_t map) {
+  const Scenario s = bench_scenario(mode, robots, map);
+  Exploration x(s, one_thread());
+  run_steps(state, x, s);
+}
+
+void bench_model(benchmark::State& state, Mode mode, int32_t robots, int32_t map) {
+  const Scenario s = bench_scenario(mode, robots, map);
+  auto m = std::make_unique<model::ExplorationModel>(s);
+  run_steps(state, *m, s);
+}
+
+// Console output as usual, plus the ratio table at the end.
+class RatioReporter : public benchmark::ConsoleReporter {
+ public:
+  void ReportRuns(const std::vector<Run>& runs) override {
+    ConsoleReporter::ReportRuns(runs);
+    for (const Run& r : runs) {
+      const std::string name = r.run_name.function_name;
+      const auto slash = name.find('/');
+      const std::string engine = name.substr(0, slash), size = name.substr(slash + 1);
+      (engine == "impl" ? impl_ : model_)[size] = r.GetAdjustedRealTime();   // microseconds
+    }
+  }
+  void Finalize() override {
+    ConsoleReporter::Finalize();
+    std::printf("\n%-32s %14s %14s %10s\n", "mode/robots/map", "impl us/step", "model us/step", "ratio");
+    for (const auto& [size, impl_us] : impl_) {
+      const auto m = model_.find(size);
+      if (m == model_.end())
+        std::printf("%-32s %14.2f %14s %10s\n", size.c_str(), impl_us, "-", "-");
+      else
+        std::printf("%-32s %14.2f %14.2f %9.1fx\n", size.c_str(), impl_us, m->second, m->second / impl_us);
+    }
+  }
+
+ private:
+  std::map<std::string, double> impl_, model_;
+};
+
+void register_all() {
+  const int32_t robot_counts[] = {10, 100, 1000, 10000};
+  const int32_t maps[] = {64, 256, 1024, 4096};
+  for (Mode mode : {Mode::abstract, Mode::cosim})
+    for (int32_t map : maps)
+      for (int32_t robots : robot_counts) {
+        if (int64_t{robots} * 4 > int64_t{map} * map) continue;   // at most a quarter of the cells
+        const std::string size = std::string(mode == Mode::abstract ? "abstract" : "cosim") + "/r" +
+                                 std::to_string(robots) + "/n" + std::to_string(map);
+        benchmark::RegisterBenchmark(("impl/" + size).c_str(), bench_impl, mode, robots, map)
+            ->Unit(benchmark::kMicrosecond)->MinTime(0.2);
+        // The model's step is O(cells): run it where a step takes well under a second.
+        const bool model_fits = int64_t{map} * map <= (mode == Mode::abstract ? 4096 * 4096 : 1024 * 1024);
+        if (model_fits)
+          benchmark::RegisterBenchmark(("model/" + size).c_str(), bench_model, mode, robots, map)
+              ->Unit(benchmark::kMicrosecond)->MinTime(0.2);
+      }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  register_all();
+  benchmark::Initialize(&argc, argv);
+  RatioReporter reporter;
+  benchmark::RunSpecifiedBenchmarks(&reporter);
+  benchmark::Shutdown();
+  return 0;
+}
