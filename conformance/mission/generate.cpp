@@ -1,0 +1,145 @@
+// Generated missions for properties, comparisons and benchmarks.
+#include "conformance/mission/generate.hpp"
+
+#include <map>
+#include <random>
+#include <string>
+
+namespace swarmcheck::conformance::mission {
+
+namespace sm = spec::mission;
+namespace sv = spec::supervisor;
+
+namespace {
+
+sm::Mission skeleton(std::size_t robots, const std::vector<sm::Point>& starts,
+                     const std::vector<sm::Point>& tasks) {
+  sm::Mission m;
+  m.source = "generated";
+  m.fsm_name = "generated.fsm";
+  for (std::size_t r = 0; r < robots; ++r)
+    m.robots.push_back(sm::Robot{"R" + std::to_string(r), starts[r]});
+  for (std::size_t t = 0; t < tasks.size(); ++t)
+    m.tasks.push_back(sm::Task{"t" + std::to_string(t), tasks[t]});
+  return m;
+}
+
+}  // namespace
+
+rc::Gen<sm::Mission> random_small_mission() {
+  return rc::gen::exec([] {
+    const auto robots = *rc::gen::inRange<std::size_t>(1, 4);
+    const auto ntasks = *rc::gen::inRange<std::size_t>(1, 4);
+    const auto states = *rc::gen::inRange<std::size_t>(2, 7);
+    auto coord = rc::gen::map(rc::gen::inRange(-10, 11), [](int v) { return double(v); });
+    auto point = rc::gen::apply([](double x, double y) { return sm::Point{x, y}; }, coord, coord);
+    std::vector<sm::Point> starts, tasks;
+    for (std::size_t r = 0; r < robots; ++r) starts.push_back(*point);
+    for (std::size_t t = 0; t < ntasks; ++t) tasks.push_back(*point);
+    sm::Mission m = skeleton(robots, starts, tasks);
+    m.regions = {sm::Region{"g0", {-10, -10}, {0, 0}}, sm::Region{"g1", {0, 0}, {10, 10}}};
+    std::vector<std::string> names;
+    for (std::size_t r = 0; r < robots; ++r) {
+      for (std::size_t t = 0; t < ntasks; ++t) {
+        const std::string e = "r" + std::to_string(r) + "t" + std::to_string(t);
+        m.events[e] = sm::Meaning{sm::MeaningKind::task_start, r, t};
+        m.fsm.events[e] = sv::EventAttr{true, true};
+        names.push_back(e);
+      }
+      for (std::size_t g = 0; g < 2; ++g) {
+        const std::string e = "r" + std::to_string(r) + "g" + std::to_string(g);
+        m.events[e] = sm::Meaning{sm::MeaningKind::region_entry, r, g};
+        m.fsm.events[e] = sv::EventAttr{false, true};
+        names.push_back(e);
+      }
+    }
+    for (std::size_t q = 0; q < states; ++q) m.fsm.states.push_back("q" + std::to_string(q));
+    for (std::size_t q = 0; q < states; ++q) {
+      const auto edges = *rc::gen::inRange<std::size_t>(0, 4);
+      for (std::size_t k = 0; k < edges; ++k) {
+        const auto e = *rc::gen::inRange<std::size_t>(0, names.size());
+        const auto to = *rc::gen::inRange<std::size_t>(0, states);
+        m.fsm.delta[m.fsm.states[q]][names[e]] = m.fsm.states[to];
+      }
+    }
+    const auto marked = *rc::gen::inRange<std::size_t>(1, 3);
+    for (std::size_t k = 0; k < marked; ++k) {
+      const auto q = *rc::gen::inRange<std::size_t>(0, states);
+      if (!m.fsm.marked.count(m.fsm.states[q])) {
+        m.fsm.marked.insert(m.fsm.states[q]);
+        m.marked_states.push_back(m.fsm.states[q]);
+      }
+    }
+    m.initial_state = m.fsm.states[0];
+    return m;
+  });
+}
+
+sm::Mission allocation_mission(std::size_t robots, std::size_t tasks, std::uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(-20.0, 20.0);
+  std::vector<sm::Point> starts, points;
+  for (std::size_t r = 0; r < robots; ++r) starts.push_back({u(rng), u(rng)});
+  for (std::size_t t = 0; t < tasks; ++t) points.push_back({u(rng), u(rng)});
+  sm::Mission m = skeleton(robots, starts, points);
+  for (std::size_t t = 0; t < tasks; ++t)
+    m.regions.push_back(sm::Region{"reg" + std::to_string(t),
+                                   {points[t][0] - 1, points[t][1] - 1},
+                                   {points[t][0] + 1, points[t][1] + 1}});
+  auto ev = [](char kind, std::size_t r, std::size_t t) {
+    return "r" + std::to_string(r) + kind + std::to_string(t);
+  };
+  for (std::size_t r = 0; r < robots; ++r)
+    for (std::size_t t = 0; t < tasks; ++t) {
+      m.events[ev('s', r, t)] = sm::Meaning{sm::MeaningKind::task_start, r, t};
+      m.events[ev('f', r, t)] = sm::Meaning{sm::MeaningKind::region_entry, r, t};
+      m.fsm.events[ev('s', r, t)] = sv::EventAttr{true, true};
+      m.fsm.events[ev('f', r, t)] = sv::EventAttr{false, true};
+    }
+  // Task status: 0 free, 1 done, 2 + r in progress by r. Breadth-first from all free.
+  auto name = [](const std::vector<std::size_t>& s) {
+    std::string n = "s";
+    for (const auto v : s) n += std::to_string(v) + ".";
+    return n;
+  };
+  std::map<std::vector<std::size_t>, bool> seen;
+  std::vector<std::vector<std::size_t>> queue{std::vector<std::size_t>(tasks, 0)};
+  seen[queue[0]] = true;
+  for (std::size_t k = 0; k < queue.size(); ++k) {
+    const auto s = queue[k];
+    const std::string q = name(s);
+    m.fsm.states.push_back(q);
+    bool all_done = true;
+    for (const auto v : s) all_done = all_done && v == 1;
+    if (all_done) {
+      m.fsm.marked.insert(q);
+      m.marked_states.push_back(q);
+    }
+    auto push = [&](std::vector<std::size_t> next, const std::string& e) {
+      m.fsm.delta[q][e] = name(next);
+      if (!seen.count(next)) {
+        seen[next] = true;
+        queue.push_back(std::move(next));
+      }
+    };
+    for (std::size_t r = 0; r < robots; ++r) {
+      bool busy = false;
+      for (const auto v : s) busy = busy || v == 2 + r;
+      for (std::size_t t = 0; t < tasks; ++t) {
+        if (s[t] == 2 + r) {
+          auto next = s;
+          next[t] = 1;
+          push(next, ev('f', r, t));
+        } else if (!busy && s[t] == 0) {
+          auto next = s;
+          next[t] = 2 + r;
+          push(next, ev('s', r, t));
+        }
+      }
+    }
+  }
+  m.initial_state = m.fsm.states[0];
+  return m;
+}
+
+}  // namespace swarmcheck::conformance::mission
