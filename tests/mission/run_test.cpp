@@ -1,0 +1,98 @@
+// Execution of the thesis mission, and replay of its trace: every event was enabled where it
+// fired, and the avoidance rule held at every step (every region entry seen in the positions
+// fired its event in that step; no robot entered a region whose event was not enabled).
+#include <gtest/gtest.h>
+
+#include <sstream>
+
+#include "impl/mission/load.hpp"
+#include "impl/mission/run.hpp"
+#include "impl/mission/trace.hpp"
+#include "spec/mission/avoidance.hpp"
+#include "spec/mission/plan.hpp"
+
+namespace {
+
+namespace sm = swarmcheck::spec::mission;
+namespace im = swarmcheck::impl::mission;
+const std::string kMission = SWARMCHECK_SCENARIOS "/thesis/thesis-mission.json";
+
+// Replays a trace; returns "" when it is consistent, else the first broken rule.
+std::string replay(const sm::Mission& m, const im::MissionTrace& t) {
+  std::string state = t.initial_state;
+  std::vector<std::string> fired;  // events since the previous step record
+  const im::StepRecord* prev = nullptr;
+  for (const auto& e : t.entries) {
+    if (e.is_event) {
+      const auto next = swarmcheck::spec::supervisor::successor(m.fsm, state, e.event.event);
+      if (!next) return "event " + e.event.event + " fired in state " + state + ", where it is not enabled";
+      if (*next != e.event.state_after) return "event " + e.event.event + " recorded a wrong state";
+      state = *next;
+      fired.push_back(e.event.event);
+      continue;
+    }
+    if (e.step.state != state) return "step state differs from the replayed state";
+    std::vector<std::string> entries;
+    for (std::size_t r = 0; r < m.robots.size(); ++r) {
+      const sm::Point before = prev ? prev->positions[r] : m.robots[r].start;
+      for (const auto& ev : sm::entry_events(m, r, before, e.step.positions[r]))
+        entries.push_back(ev);
+    }
+    if (prev == nullptr) entries = sm::initial_entries(m);
+    for (const auto& ev : entries)
+      if (std::find(fired.begin(), fired.end(), ev) == fired.end())
+        return "a robot entered a region without its event " + ev + " at t=" + std::to_string(e.step.time_s);
+    fired.clear();
+    prev = &e.step;
+  }
+  return sm::is_marked(m, state) ? "" : "the trace does not end at a marked state";
+}
+
+void run_and_replay(im::BodyModel body) {
+  const auto m = im::load_mission(kMission);
+  im::RunOptions o;
+  o.body = body;
+  std::stringstream trace;
+  im::TraceWriter writer(trace, m, o);
+  const auto r = im::run_mission(m, o, &writer);
+  ASSERT_TRUE(r.completed) << r.reason;
+  EXPECT_EQ(r.final_state, "s134:146:143");
+  EXPECT_EQ(r.reason, "mission complete");
+  const auto t = im::read_trace(trace, "trace");
+  EXPECT_EQ(replay(m, t), "");
+  // The robots did the planned tasks: A 3 then 4, B 1 then 2.
+  std::vector<std::string> starts;
+  for (const auto& e : r.events)
+    if (e.controllable) starts.push_back(e.event);
+  EXPECT_EQ(starts, (std::vector<std::string>{"a3s", "a4s", "b1s", "b2s"}));
+}
+
+TEST(MissionRun, ThesisMissionCompletesWithUnicycleBodiesAndItsTraceReplays) {
+  run_and_replay(im::BodyModel::unicycle);
+}
+
+TEST(MissionRun, ThesisMissionCompletesWithKinematicBodiesAndItsTraceReplays) {
+  run_and_replay(im::BodyModel::kinematic);
+}
+
+TEST(MissionRun, ReplayCatchesAnEventThatWasNotEnabled) {
+  const auto m = im::load_mission(kMission);
+  im::MissionTrace t;
+  t.initial_state = "s1";
+  im::TraceEntry e;
+  e.is_event = true;
+  e.event = im::EventRecord{0.0, "a3s", "A", true, "s9"};
+  t.entries.push_back(e);
+  EXPECT_EQ(replay(m, t), "event a3s fired in state s1, where it is not enabled");
+}
+
+TEST(MissionRun, TimeLimitIsReported) {
+  const auto m = im::load_mission(kMission);
+  im::RunOptions o;
+  o.max_time_s = 1.0;
+  const auto r = im::run_mission(m, o);
+  EXPECT_FALSE(r.completed);
+  EXPECT_EQ(r.reason, "time limit of 1 s reached");
+}
+
+}  // namespace
