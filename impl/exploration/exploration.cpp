@@ -7,8 +7,8 @@
 
 #include <cmath>
 
+#include "impl/exploration/body_kernel.hpp"
 #include "impl/exploration/environment.hpp"
-#include "spec/exploration/body.hpp"
 #include "spec/exploration/controller.hpp"
 #include "spec/exploration/scenario.hpp"
 
@@ -23,6 +23,7 @@ struct Exploration::State {
   impl::Environment env;
   std::vector<ControllerState> ctrl;
   std::vector<BodyState> body;
+  std::vector<impl::Heading> heading;   // cos and sin of body[r].theta_rad
   int64_t arrived = 0;   // controllers whose onDestinationOutput is 1
 
   void step_robot(std::size_t r, int32_t env_output, const Point_m& waypoint);
@@ -42,7 +43,8 @@ void Exploration::State::step_robot(std::size_t r, int32_t env_output, const Poi
   const bool still = before.servo_left == 0 && before.servo_right == 0 && !negative_zero(pose.x_m) &&
                      !negative_zero(pose.y_m) && !negative_zero(pose.theta_rad);
   if (!still)
-    body[r] = body_step(robot, pose, before.servo_left, before.servo_right, env.scenario().params.step_size);
+    impl::body_step_cached(robot, body[r], heading[r], before.servo_left, before.servo_right,
+                           env.scenario().params.step_size);
 }
 
 Exploration::Exploration(const Scenario& s, ExplorationOptions options, RobotParams robot) {
@@ -51,6 +53,7 @@ Exploration::Exploration(const Scenario& s, ExplorationOptions options, RobotPar
   for (const Point_m& p : s.robots) {
     state_->ctrl.push_back(initial_controller());
     state_->body.push_back(BodyState{p[0], p[1], 0.0});
+    state_->heading.push_back(impl::heading_of(0.0));
   }
   state_->arrived = static_cast<int64_t>(s.robots.size());
 }
