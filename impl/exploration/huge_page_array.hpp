@@ -18,11 +18,13 @@ class HugePageArray {
  public:
   HugePageArray() = default;
   HugePageArray(std::size_t n, const T& fill) : n_(n) {
-    bytes_ = (n * sizeof(T) + kHugePage - 1) / kHugePage * kHugePage;
+    // Small arrays stay small: huge pages only pay off beyond a few of them.
+    const std::size_t page = n * sizeof(T) >= 2 * kHugePage ? kHugePage : std::size_t{4096};
+    bytes_ = (n * sizeof(T) + page - 1) / page * page;
     if (bytes_ == 0) return;
     void* p = ::mmap(nullptr, bytes_, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
     if (p == MAP_FAILED) throw std::bad_alloc();
-    ::madvise(p, bytes_, MADV_HUGEPAGE);   // advice only: without THP it is plain memory
+    if (page == kHugePage) ::madvise(p, bytes_, MADV_HUGEPAGE);   // advice: without THP, plain memory
     data_ = static_cast<T*>(p);
     for (std::size_t k = 0; k < n; ++k) data_[k] = fill;
   }
