@@ -3,6 +3,7 @@
 
 #include "apps/swarmcheck/conform_verb.hpp"
 #include "apps/swarmcheck/fsm_verb.hpp"
+#include "apps/swarmcheck/mission_verb.hpp"
 #include "apps/swarmcheck/prove_verb.hpp"
 #include "apps/swarmcheck/run_verb.hpp"
 
@@ -17,6 +18,7 @@ int main(int argc, char** argv) {
   swarmcheck::cli::add_replay_verb(app, exit_code);
   swarmcheck::cli::add_fsm_verb(app, exit_code);
   swarmcheck::cli::add_prove_verb(app, exit_code);
+  swarmcheck::cli::add_mission_verb(app, exit_code);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
