@@ -30,7 +30,7 @@ Scenario bench_scenario(Mode mode, int32_t robots, int32_t map_size) {
   s.map_size = map_size;
   s.obstacles.clear();
   s.robots.clear();
-  s.max_steps = int64_t{1} << 40;
+  s.max_steps = kStepsMax;
   const int64_t cells = int64_t{map_size} * map_size;
   std::map<int64_t, int64_t> swapped;   // sparse Fisher-Yates over [0, cells)
   for (int64_t k = 0; k < robots; ++k) {

@@ -15,7 +15,7 @@ using exploration::RuleSet;
 namespace {
 // Deposit amounts are tabulated by offset when the window has at most this many cells.
 constexpr int64_t kDepositTableMax = 1 << 16;
-constexpr std::size_t kPrefetchAhead = 8;   // robots
+constexpr std::size_t kPrefetchAhead = 4;   // robots
 constexpr int32_t kPrefetchRangeMax = 2;    // s_range up to which windows are prefetched
 }  // namespace
 

@@ -19,9 +19,6 @@ namespace swarmcheck::impl {
 
 class LazyGrid {
  public:
-  static constexpr uint8_t kVisited = 1;
-  static constexpr uint8_t kObstacle = 2;
-
   LazyGrid(const exploration::Scenario& s);
 
   std::size_t index(int32_t i, int32_t j) const {
@@ -45,24 +42,27 @@ class LazyGrid {
   }
   void deposit(std::size_t k, int64_t tick, double amount) {
     cells_[k].value = current(k, tick) + amount;
-    cells_[k].written = tick;
+    cells_[k].written = static_cast<int32_t>(tick);
   }
   // thesis rule set: the literal per-step update on every cell.
   void evaporate_dense();
   bool dense() const { return dense_; }
 
-  bool visited(std::size_t k) const { return cells_[k].flags & kVisited; }
-  bool obstacle(std::size_t k) const { return cells_[k].flags & kObstacle; }
+  bool visited(std::size_t k) const { return cells_[k].occupancy & kVisitedBit; }
+  bool obstacle(std::size_t k) const { return cells_[k].occupancy & kObstacleBit; }
   // Marks a cell visited; true if it was not before.
   bool mark_visited(std::size_t k) {
-    if (cells_[k].flags & kVisited) return false;
-    cells_[k].flags = static_cast<uint8_t>(cells_[k].flags | kVisited);
+    if (cells_[k].occupancy & kVisitedBit) return false;
+    cells_[k].occupancy |= kVisitedBit;
     return true;
   }
-  void set_obstacle(std::size_t k) { cells_[k].flags = static_cast<uint8_t>(cells_[k].flags | kObstacle); }
-  int32_t occupant(std::size_t k) const { return cells_[k].occupant; }
-  void set_occupant(std::size_t k, int32_t r) { cells_[k].occupant = r; }
-  bool blocked(std::size_t k) const { return (cells_[k].flags & kObstacle) || cells_[k].occupant >= 0; }
+  void set_obstacle(std::size_t k) { cells_[k].occupancy |= kObstacleBit; }
+  int32_t occupant(std::size_t k) const { return static_cast<int32_t>(cells_[k].occupancy & kRobotMask) - 1; }
+  void set_occupant(std::size_t k, int32_t r) {
+    cells_[k].occupancy = (cells_[k].occupancy & ~kRobotMask) | static_cast<uint32_t>(r + 1);
+  }
+  // An obstacle or a robot: any bit but `visited`.
+  bool blocked(std::size_t k) const { return (cells_[k].occupancy & ~kVisitedBit) != 0; }
 
   // Asks the memory system for cells [k, k + count) ahead of use (no effect on results).
   void prefetch(std::size_t k, std::size_t count) const {
@@ -73,12 +73,16 @@ class LazyGrid {
   uint64_t digest(int64_t tick) const;   // FNV-1a over every current value, raster order
 
  private:
+  // 16 bytes: four cells to a cache line. Ticks fit 31 bits (kStepsMax); robot indices 30 bits
+  // (kRobotsMax): the two top bits of `occupancy` are the flags, the rest is robot index + 1.
   struct CellData {
-    double value = 0.0;      // pheromone as written at `written`
-    int64_t written = 0;     // tick of the last write
-    int32_t occupant = -1;   // robot index or -1
-    uint8_t flags = 0;       // kVisited | kObstacle
+    double value = 0.0;       // pheromone as written at `written`
+    int32_t written = 0;      // tick of the last write
+    uint32_t occupancy = 0;   // kVisitedBit | kObstacleBit | (robot index + 1, or 0)
   };
+  static constexpr uint32_t kVisitedBit = 1U << 31;
+  static constexpr uint32_t kObstacleBit = 1U << 30;
+  static constexpr uint32_t kRobotMask = kObstacleBit - 1;
   static constexpr int kDecayCacheBits = 12;
   static constexpr int64_t kDecayCacheSize = int64_t{1} << kDecayCacheBits;
 

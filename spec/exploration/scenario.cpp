@@ -67,6 +67,8 @@ void validate_cells(const Scenario& s) {
                                  std::to_string(it->second) + "]");
   }
   if (s.robots.empty()) throw InputError("robots", "expected at least one robot");
+  if (static_cast<int64_t>(s.robots.size()) > kRobotsMax)
+    throw InputError("robots", "expected at most 2^30 robots, got " + std::to_string(s.robots.size()));
   const double side_m = s.map_size * s.cell_size;
   std::map<CellIndex, std::size_t> robot_at;
   for (std::size_t k = 0; k < s.robots.size(); ++k) {
@@ -126,7 +128,7 @@ void validate(const Scenario& s) {
   validate_cells(s);
   validate_params(s.params, s.mode);
   require(s.max_steps >= 0 && s.max_steps <= kStepsMax, "max_steps",
-          "an integer in [0, 2^40]", static_cast<double>(s.max_steps));
+          "an integer in [0, 2^31 - 1]", static_cast<double>(s.max_steps));
 }
 
 Scenario parse_scenario(const std::string& text, const std::string& file) {

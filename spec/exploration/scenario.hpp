@@ -17,7 +17,8 @@ inline constexpr int32_t kMapSizeMax = 65536;
 inline constexpr int32_t kRangeMax = 1 << 20;
 inline constexpr double kDepositMax = 1e12;      // max_ph + epsilon / a2
 inline constexpr double kCosimStepMax_s = 0.2;   // controller stability: K k_beta dt < 2
-inline constexpr int64_t kStepsMax = int64_t{1} << 40;
+inline constexpr int64_t kStepsMax = (int64_t{1} << 31) - 1;   // ~6.8 simulated years at 0.1 s
+inline constexpr int64_t kRobotsMax = int64_t{1} << 30;
 
 Params default_params();
 

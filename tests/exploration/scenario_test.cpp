@@ -79,6 +79,8 @@ TEST(Scenario, EveryBadInputNamesItsPathAndWhatWasExpected) {
             "controller's turn loop is stable only for K k_beta dt < 2), got 0.5");
   EXPECT_EQ(error_of(R"({"map_size": 4, "robots": [[0.5, 0.5]], "seed": -1})"),
             "s.json: seed: expected a non-negative integer, got -1");
+  EXPECT_EQ(error_of(R"({"map_size": 4, "robots": [[0.5, 0.5]], "max_steps": 2147483648})"),
+            "s.json: max_steps: expected an integer in [0, 2^31 - 1], got 2147483648");
   EXPECT_EQ(error_of(R"({"map_size": 4, "robots": [], "obstacles": []})"),
             "s.json: robots: expected at least one robot");
 }
