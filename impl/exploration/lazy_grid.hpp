@@ -4,7 +4,7 @@
 // spec's decay function F (spec/exploration/decay.hpp), evaluated only when the cell is read or
 // written. The thesis rule set's literal update cannot be expressed through F, so it stays
 // dense: evaporate_dense() every step, and `value` is always current.
-// A cell's fields sit together (one 24-byte record) so that a robot's window costs a few cache
+// A cell's fields sit together (one 16-byte record) so that a robot's window costs a few cache
 // lines even on maps far larger than the cache; F(k) for small ages comes from a table filled by
 // the spec's own decay_factor, so the bits are the same.
 #include <cstdint>
