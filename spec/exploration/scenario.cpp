@@ -9,6 +9,7 @@
 
 #include "spec/exploration/neighbourhood.hpp"
 #include "spec/util/hana_json.hpp"
+#include "spec/util/json_text.hpp"
 
 namespace swarmcheck::exploration {
 namespace {
@@ -132,25 +133,11 @@ void validate(const Scenario& s) {
 }
 
 Scenario parse_scenario(const std::string& text, const std::string& file) {
-  json_io::Json j;
-  try {
-    j = json_io::Json::parse(text);
-  } catch (const nlohmann::json::parse_error& e) {
-    // Locate the byte nlohmann stopped at as line:column, and keep its reason.
-    std::size_t line = 1, col = 1;
-    for (std::size_t k = 0; k + 1 < e.byte && k < text.size(); ++k) {
-      if (text[k] == '\n') { ++line; col = 1; } else { ++col; }
-    }
-    std::string reason = e.what();
-    if (auto pos = reason.find(": ", reason.find("column")); pos != std::string::npos)
-      reason = reason.substr(pos + 2);
-    throw InputError(file + ":" + std::to_string(line) + ":" + std::to_string(col),
-                     "not valid JSON: " + reason);
-  }
+  const auto j = json_io::parse_json_text(text, file);
   try {
     return scenario_from_json(j);
   } catch (const InputError& e) {
-    throw InputError(file + ": " + e.where(), std::string(e.what()).substr(e.where().size() + 2));
+    throw json_io::in_file(e, file);
   }
 }
 

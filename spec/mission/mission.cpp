@@ -5,6 +5,7 @@
 #include <initializer_list>
 
 #include "spec/util/hana_json.hpp"
+#include "spec/util/json_text.hpp"
 #include "spec/util/input_error.hpp"
 
 namespace swarmcheck::spec::mission {
@@ -75,29 +76,11 @@ MissionDecl decl_from_json(const Json& j) {
 }  // namespace
 
 MissionDecl parse_mission_text(const std::string& text, const std::string& file) {
-  Json j;
-  try {
-    j = Json::parse(text);
-  } catch (const nlohmann::json::parse_error& e) {
-    std::size_t line = 1, col = 1;
-    for (std::size_t k = 0; k + 1 < e.byte && k < text.size(); ++k) {
-      if (text[k] == '\n') {
-        ++line;
-        col = 1;
-      } else {
-        ++col;
-      }
-    }
-    std::string reason = e.what();
-    if (auto pos = reason.find(": ", reason.find("column")); pos != std::string::npos)
-      reason = reason.substr(pos + 2);
-    throw InputError(file + ":" + std::to_string(line) + ":" + std::to_string(col),
-                     "not valid JSON: " + reason);
-  }
+  const auto j = json_io::parse_json_text(text, file);
   try {
     return decl_from_json(j);
   } catch (const InputError& e) {
-    throw InputError(file + ": " + e.where(), std::string(e.what()).substr(e.where().size() + 2));
+    throw json_io::in_file(e, file);
   }
 }
 

@@ -7,21 +7,15 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "tests/util/shell.hpp"
+
 namespace fs = std::filesystem;
 
 namespace {
-struct Result {
-  int status;
-  std::string out;
-};
-Result sh(const std::string& args) {
-  FILE* p = popen((std::string(SWARMCHECK_BIN) + " " + args + " 2>&1").c_str(), "r");
-  std::string out;
-  char buf[4096];
-  while (std::size_t n = fread(buf, 1, sizeof buf, p)) out.append(buf, n);
-  const int rc = pclose(p);
-  return Result{WEXITSTATUS(rc), out};
-}
+using Result = swarmcheck::testing::ShellResult;
+
+Result sh(const std::string& args) { return swarmcheck::testing::run_binary(SWARMCHECK_BIN, args); }
+
 fs::path temp_dir() {
   fs::path d = fs::temp_directory_path() / ("swarmcheck-replay-" + std::to_string(::getpid()));
   fs::create_directories(d);

@@ -8,36 +8,17 @@
 #include <nlohmann/json.hpp>
 
 #include "apps/swarmcheck/mission_verb.hpp"
+#include "tests/util/cli_runner.hpp"
 
 namespace {
 
 namespace fs = std::filesystem;
 const std::string kMission = SWARMCHECK_SCENARIOS "/thesis/thesis-mission.json";
 
-struct CliRun {
-  int status = -1;
-  std::string out, err;
-};
+using swarmcheck::testing::CliRun;
 
-CliRun run_cli(std::vector<std::string> args) {
-  CLI::App app{"swarmcheck"};
-  app.require_subcommand(1);
-  int exit_code = 0;
-  swarmcheck::cli::add_mission_verb(app, exit_code);
-  std::vector<const char*> argv{"swarmcheck"};
-  for (const auto& a : args) argv.push_back(a.c_str());
-  CliRun r;
-  testing::internal::CaptureStdout();
-  testing::internal::CaptureStderr();
-  try {
-    app.parse(static_cast<int>(argv.size()), argv.data());
-    r.status = exit_code;
-  } catch (const CLI::ParseError& e) {
-    r.status = app.exit(e) == 0 ? 0 : 2;
-  }
-  r.out = testing::internal::GetCapturedStdout();
-  r.err = testing::internal::GetCapturedStderr();
-  return r;
+CliRun run_cli(const std::vector<std::string>& args) {
+  return swarmcheck::testing::run_verb(swarmcheck::cli::add_mission_verb, args);
 }
 
 fs::path temp_dir() {
