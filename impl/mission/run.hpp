@@ -33,15 +33,15 @@ struct RunOptions {
 };
 
 struct EventRecord {
-  double time_s;
+  double time_s = 0.0;
   std::string event;
   std::string robot;
-  bool controllable;
+  bool controllable = false;
   std::string state_after;
 };
 
 struct StepRecord {
-  double time_s;
+  double time_s = 0.0;
   std::string state;
   std::vector<spec::mission::Point> positions;
   std::vector<bool> blocked;  // kept its pose because an entry event was not enabled
