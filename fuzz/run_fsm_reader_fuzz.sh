@@ -13,7 +13,7 @@ if ! command -v clang++ >/dev/null 2>&1; then
 fi
 mkdir -p "$out"
 clang++ -std=c++20 -O1 -g -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=all \
-  -I "$src" \
+  -I "$src" -I "$src/impl/include" \
   "$src/fuzz/fsm_reader_fuzz.cpp" \
   "$src/impl/supervisor/fsm_read.cpp" \
   "$src/impl/supervisor/fsm_write.cpp" \

@@ -1,6 +1,7 @@
 // `swarmcheck fsm ...`: each subcommand reads its .fsm files, runs one operation on the chosen
-// engine (impl by default; model, the reference, on request) and prints a summary, as text or
-// JSON. Output files are written whole or not at all (temporary file + rename).
+// engine (the library by default; the reference model on request, through the harness's engine
+// choice) and prints a summary, as text or JSON. Output files are written whole or not at all
+// (write_fsm_file: temporary file + rename).
 #include "apps/swarmcheck/fsm_verb.hpp"
 
 #include <fmt/format.h>
@@ -9,18 +10,18 @@
 #include <nlohmann/json.hpp>
 
 #include "apps/swarmcheck/verb.hpp"
-#include "impl/supervisor/fsm_export.hpp"
-#include "impl/supervisor/fsm_io.hpp"
-#include "impl/supervisor/operations.hpp"
-#include "model/supervisor/operations.hpp"
+#include "conformance/supervisor/engine.hpp"
+#include "views/fsm_svg.hpp"
+#include "impl/io/atomic_file.hpp"
+#include "swarmcheck/supervisor.hpp"
 
 namespace swarmcheck::cli {
 
 namespace {
 
-namespace impl = swarmcheck::impl::supervisor;
-namespace model = swarmcheck::model::supervisor;
-using spec::supervisor::Automaton;
+namespace sv = swarmcheck::supervisor;
+namespace engines = swarmcheck::conformance::supervisor;
+using sv::Automaton;
 using Json = nlohmann::ordered_json;
 
 struct FsmOptions {
@@ -36,37 +37,16 @@ void print_json(const Json& j) { fmt::print("{}\n", j.dump(2)); }
 
 std::vector<Automaton> read_all(const std::vector<std::string>& paths) {
   std::vector<Automaton> out;
-  for (const auto& p : paths) out.push_back(impl::read_fsm_file(p));
+  for (const auto& p : paths) out.push_back(sv::read_fsm_file(p));
   return out;
 }
 
-Automaton product_of(const std::vector<Automaton>& parts, const std::vector<std::string>& names,
-                     const std::string& engine) {
-  if (engine == "model") return model::product(parts, names);
-  std::vector<impl::Fsm> compiled;
-  for (const auto& a : parts) compiled.push_back(impl::compile(a));
-  std::vector<const impl::Fsm*> ptrs;
-  for (const auto& f : compiled) ptrs.push_back(&f);
-  return impl::decompile(impl::product(ptrs, names));
-}
-
 int run_check(const FsmOptions& o) {
-  const Automaton a = impl::read_fsm_file(o.files.front());
-  std::vector<std::string> blocking, unreachable;
-  if (o.engine == "model") {
-    blocking = model::blocking_states(a);
-    const auto ac = model::accessible_states(a);
-    for (const auto& q : a.states)
-      if (!ac.count(q)) unreachable.push_back(q);
-  } else {
-    const impl::Fsm f = impl::compile(a);
-    for (const auto s : impl::blocking_states(f)) blocking.push_back(f.state_names[s]);
-    const auto ac = impl::accessible_mask(f);
-    for (impl::StateId s = 0; s < f.state_count(); ++s)
-      if (!ac[s]) unreachable.push_back(f.state_names[s]);
-  }
-  const auto coac = model::coaccessible_states(a);
-  const bool coaccessible = coac.size() == a.states.size();
+  const Automaton a = sv::read_fsm_file(o.files.front());
+  const sv::CheckReport r = engines::check(a, engines::engine_named(o.engine));
+  const std::vector<std::string>& blocking = r.blocking_states;
+  const std::vector<std::string>& unreachable = r.unreachable_states;
+  const bool coaccessible = r.coaccessible;
   std::size_t controllable = 0;
   for (const auto& [e, attr] : a.events) controllable += attr.controllable ? 1 : 0;
   const bool nonblocking = blocking.empty();
@@ -77,7 +57,7 @@ int run_check(const FsmOptions& o) {
                 {"marked", a.marked.size()},
                 {"events", a.events.size()},
                 {"controllable_events", controllable},
-                {"transitions", spec::supervisor::transition_count(a)},
+                {"transitions", swarmcheck::supervisor::transition_count(a)},
                 {"deterministic", true},  // the reader refuses nondeterministic files
                 {"accessible", unreachable.empty()},
                 {"unreachable_states", unreachable},
@@ -87,7 +67,7 @@ int run_check(const FsmOptions& o) {
   } else {
     fmt::print("{}: {} states ({} marked), {} events ({} controllable), {} transitions\n",
                o.files.front(), a.states.size(), a.marked.size(), a.events.size(), controllable,
-               spec::supervisor::transition_count(a));
+               swarmcheck::supervisor::transition_count(a));
     fmt::print("deterministic: yes\naccessible: {} ({} unreachable)\ncoaccessible: {}\n",
                unreachable.empty() ? "yes" : "no", unreachable.size(),
                coaccessible ? "yes" : "no");
@@ -98,33 +78,27 @@ int run_check(const FsmOptions& o) {
 }
 
 int run_product(const FsmOptions& o) {
-  const Automaton p = product_of(read_all(o.files), o.files, o.engine);
-  impl::write_file_atomically(o.out, impl::write_fsm(p));
+  const engines::Engine engine = engines::engine_named(o.engine);
+  const Automaton p = engines::product(read_all(o.files), o.files, engine);
+  sv::write_fsm_file(o.out, p);
   if (o.json)
     print_json({{"output", o.out},
                 {"states", p.states.size()},
-                {"transitions", spec::supervisor::transition_count(p)},
-                {"nonblocking", model::is_nonblocking(p)}});
+                {"transitions", swarmcheck::supervisor::transition_count(p)},
+                {"nonblocking", engines::is_nonblocking(p, engine)}});
   else
     fmt::print("{}: {} states, {} transitions\n", o.out, p.states.size(),
-               spec::supervisor::transition_count(p));
+               swarmcheck::supervisor::transition_count(p));
   return 0;
 }
 
 int run_synth(const FsmOptions& o) {
-  const Automaton plant = product_of(read_all(o.plants), o.plants, o.engine);
-  const Automaton spec = product_of(read_all(o.specs), o.specs, o.engine);
-  Automaton sup;
-  bool controllable = false;
-  if (o.engine == "model") {
-    sup = model::supcon(plant, spec);
-    controllable = model::is_controllable(plant, spec);
-  } else {
-    const impl::Fsm g = impl::compile(plant), s = impl::compile(spec);
-    sup = impl::decompile(impl::supcon(g, s));
-    controllable = impl::is_controllable(g, s);
-  }
-  impl::write_file_atomically(o.out, impl::write_fsm(sup));
+  const engines::Engine engine = engines::engine_named(o.engine);
+  const Automaton plant = engines::product(read_all(o.plants), o.plants, engine);
+  const Automaton spec = engines::product(read_all(o.specs), o.specs, engine);
+  const Automaton sup = engines::supcon(plant, spec, engine);
+  const bool controllable = engines::is_controllable(plant, spec, engine);
+  sv::write_fsm_file(o.out, sup);
   const bool empty = sup.states.empty();
   if (o.json)
     print_json({{"output", o.out},
@@ -132,39 +106,41 @@ int run_synth(const FsmOptions& o) {
                 {"spec_states", spec.states.size()},
                 {"spec_controllable", controllable},
                 {"states", sup.states.size()},
-                {"transitions", spec::supervisor::transition_count(sup)},
+                {"transitions", swarmcheck::supervisor::transition_count(sup)},
                 {"marked", sup.marked.size()},
                 {"empty", empty}});
   else
     fmt::print("{}: supervisor of {} states, {} transitions{} (plant {} states, spec {} states, "
                "spec {}controllable as given)\n",
-               o.out, sup.states.size(), spec::supervisor::transition_count(sup),
+               o.out, sup.states.size(), swarmcheck::supervisor::transition_count(sup),
                empty ? " (EMPTY: no controllable nonblocking behaviour exists)" : "",
                plant.states.size(), spec.states.size(), controllable ? "" : "not ");
   return 0;
 }
 
 int run_export(const FsmOptions& o) {
-  const Automaton a = impl::read_fsm_file(o.files.front());
-  const std::string text = o.to == "dot"    ? impl::to_dot(a)
-                           : o.to == "json" ? impl::to_json_text(a)
-                                            : impl::write_fsm(a);
+  const Automaton a = sv::read_fsm_file(o.files.front());
+  const std::string text = o.to == "dot"    ? sv::to_dot(a)
+                           : o.to == "json" ? sv::to_json_text(a)
+                           : o.to == "svg"  ? views::fsm_svg(a)
+                                            : sv::write_fsm(a);
   if (o.out.empty())
     fmt::print("{}", text);
   else
-    impl::write_file_atomically(o.out, text);
+    impl::io::write_file_atomically(o.out, text);
   return 0;
 }
 
 Json witness(const std::vector<std::string>& w) { return Json(w); }
 
 int run_compare(const FsmOptions& o) {
-  const Automaton a = impl::read_fsm_file(o.files[0]);
-  const Automaton b = impl::read_fsm_file(o.files[1]);
-  const auto ab = model::language_inclusion(a, b);
-  const auto ba = model::language_inclusion(b, a);
+  const Automaton a = sv::read_fsm_file(o.files[0]);
+  const Automaton b = sv::read_fsm_file(o.files[1]);
+  const engines::Engine engine = engines::engine_named(o.engine);
+  const sv::Inclusion ab = engines::language_inclusion(a, b, engine);
+  const sv::Inclusion ba = engines::language_inclusion(b, a, engine);
   if (o.json) {
-    auto side = [](const model::Inclusion& i) {
+    auto side = [](const sv::Inclusion& i) {
       return Json{{"closed", i.closed},
                   {"marked", i.marked},
                   {"closed_witness", i.closed ? Json(nullptr) : witness(i.closed_witness)},
@@ -175,7 +151,7 @@ int run_compare(const FsmOptions& o) {
                 {"a_in_b", side(ab)},
                 {"b_in_a", side(ba)}});
   } else {
-    auto line = [](const char* what, const model::Inclusion& i) {
+    auto line = [](const char* what, const sv::Inclusion& i) {
       fmt::print("{}: L {} (witness: {}), Lm {} (witness: {})\n", what, i.closed ? "yes" : "no",
                  fmt::join(i.closed_witness, " "), i.marked ? "yes" : "no",
                  fmt::join(i.marked_witness, " "));
@@ -226,9 +202,9 @@ void add_fsm_verb(CLI::App& app, int& exit_code) {
   add_engine(synth, *o);
   wire(synth, run_synth);
 
-  auto* exp = fsm->add_subcommand("export", "write an automaton as DOT, JSON or canonical .fsm");
+  auto* exp = fsm->add_subcommand("export", "write an automaton as DOT, JSON, canonical .fsm or SVG");
   exp->add_option("file", o->files, "the .fsm file")->required()->expected(1);
-  exp->add_option("--to", o->to, "dot, json or fsm")->check(CLI::IsMember({"dot", "json", "fsm"}));
+  exp->add_option("--to", o->to, "dot, json, fsm or svg (laid out by Graphviz dot)")->check(CLI::IsMember({"dot", "json", "fsm", "svg"}));
   exp->add_option("-o,--output", o->out, "write here instead of standard output");
   wire(exp, run_export);
 
@@ -236,6 +212,7 @@ void add_fsm_verb(CLI::App& app, int& exit_code) {
       "compare", "language inclusion both ways, with shortest witnesses (exit 1 if not equal)");
   cmp->add_option("files", o->files, "A.fsm B.fsm")->required()->expected(2);
   cmp->add_flag("--json", o->json, "print JSON");
+  add_engine(cmp, *o);
   wire(cmp, run_compare);
 }
 

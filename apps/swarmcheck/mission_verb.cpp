@@ -4,7 +4,8 @@
 // the events in order, each robot's tasks and travel, the makespan and the total (status 1 when
 // no marked state can be reached). run simulates the robots under the supervisor and reports
 // whether the mission completed (status 0) or why not (status 1); --trace writes JSON Lines
-// (temporary file + rename).
+// (TraceFile: temporary file + rename). The library does the work; the thesis baseline planner
+// is reached through the harness (conformance/mission/engine).
 #include "apps/swarmcheck/mission_verb.hpp"
 
 #include <fmt/format.h>
@@ -12,19 +13,17 @@
 #include <memory>
 #include <nlohmann/json.hpp>
 
-#include "apps/swarmcheck/output_file.hpp"
 #include "apps/swarmcheck/verb.hpp"
-#include "impl/mission/load.hpp"
-#include "impl/mission/planner.hpp"
-#include "impl/mission/run.hpp"
-#include "impl/mission/trace.hpp"
-#include "model/mission/thesis_dijkstra.hpp"
+#include "conformance/mission/engine.hpp"
+#include "swarmcheck/mission.hpp"
+#include "impl/io/atomic_file.hpp"
+#include "views/mission_svg.hpp"
 
 namespace swarmcheck::cli {
 
 namespace {
 
-namespace sm = spec::mission;
+namespace sm = swarmcheck::mission;
 using Json = nlohmann::ordered_json;
 
 struct PlanOptions {
@@ -37,6 +36,7 @@ struct PlanOptions {
 struct RunOptions {
   std::string file;
   std::string trace;
+  std::string svg;
   std::string body = "unicycle";
   double dt = 0.05;
   double max_time = 3600.0;
@@ -51,18 +51,13 @@ std::string join(const std::vector<std::string>& xs) {
 }
 
 int run_plan(const PlanOptions& o) {
-  const sm::Mission m = impl::mission::load_mission(o.file);
+  const sm::Mission m = sm::load_mission(o.file);
   const std::string from = o.from.empty() ? m.initial_state : o.from;
   if (std::find(m.fsm.states.begin(), m.fsm.states.end(), from) == m.fsm.states.end())
     throw InputError("--from", fmt::format("state \"{}\" is not in {}", from, m.fsm_name));
   const sm::PlanQuery q = sm::query_from(m, from);
-  sm::Plan p;
-  if (o.planner == "thesis") {
-    p = model::mission::thesis_plan(m, q);
-  } else {
-    impl::mission::Planner planner(m);
-    p = planner.plan(q);
-  }
+  namespace engines = swarmcheck::conformance::mission;
+  const sm::Plan p = engines::plan(m, q, engines::planner_named(o.planner));
   const auto seqs = sm::task_sequences(m, p.events);
   if (o.json) {
     Json robots = Json::array();
@@ -99,20 +94,20 @@ int run_plan(const PlanOptions& o) {
 }
 
 int run_run(const RunOptions& o) {
-  const sm::Mission m = impl::mission::load_mission(o.file);
-  impl::mission::RunOptions ro;
-  if (o.body == "kinematic") ro.body = impl::mission::BodyModel::kinematic;
+  const sm::Mission m = sm::load_mission(o.file);
+  sm::RunOptions ro;
+  if (o.body == "kinematic") ro.body = sm::BodyModel::kinematic;
   ro.dt_s = o.dt;
   ro.max_time_s = o.max_time;
   ro.speed_m_per_s = o.speed;
-  std::unique_ptr<AtomicOutputFile> trace;
-  std::unique_ptr<impl::mission::TraceWriter> writer;
-  if (!o.trace.empty()) {
-    trace = std::make_unique<AtomicOutputFile>(o.trace);
-    writer = std::make_unique<impl::mission::TraceWriter>(trace->stream(), m, ro);
-  }
-  const impl::mission::RunResult r = impl::mission::run_mission(m, ro, writer.get());
+  std::unique_ptr<sm::TraceFile> trace;
+  if (!o.trace.empty()) trace = std::make_unique<sm::TraceFile>(o.trace, m, ro);
+  views::MissionPathRecorder paths(m.robots.size(), trace.get());
+  const sm::RunResult r = sm::run_mission(m, ro, &paths);
   if (trace) trace->commit();
+  if (!o.svg.empty())
+    impl::io::write_file_atomically(o.svg, views::mission_svg({&m, paths.paths(), "mission " + o.file,
+                                                         (r.completed ? "mission complete" : r.reason) + fmt::format(" at t={:.2f} s in state {}", r.time_s, r.final_state)}));
   std::vector<std::string> events;
   for (const auto& e : r.events) events.push_back(e.event);
   if (o.json) {
@@ -162,6 +157,7 @@ void add_mission_verb(CLI::App& app, int& exit_code) {
   auto* run = mission->add_subcommand("run", "run the mission in simulation under the supervisor");
   run->add_option("mission", ro->file, "mission file (JSON)")->required();
   run->add_option("--trace", ro->trace, "write the run as JSON Lines to this file");
+  run->add_option("--svg", ro->svg, "write a picture of the run (regions, tasks, paths) to this file");
   run->add_option("--body", ro->body, "unicycle (controller + body, default) or kinematic")
       ->check(CLI::IsMember({"unicycle", "kinematic"}));
   run->add_option("--dt", ro->dt, "simulation step, s (default 0.05)")

@@ -1,6 +1,6 @@
 // `swarmcheck prove`: runs each obligation in its own process under a watchdog (runner.hpp),
 // prints a table or JSON, and writes the SMT-LIB2 queries and counterexample traces whole or
-// not at all (AtomicOutputFile).
+// not at all (impl::io::AtomicFile).
 #include "apps/swarmcheck/prove_verb.hpp"
 
 #include <fmt/format.h>
@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "apps/swarmcheck/output_file.hpp"
+#include "impl/io/atomic_file.hpp"
 #include "apps/swarmcheck/verb.hpp"
 #include "proofs/obligations/runner.hpp"
 
@@ -51,7 +51,7 @@ std::filesystem::path output_dir(const std::string& dir, const char* option) {
 }
 
 void write_file(const std::filesystem::path& path, const std::string& text) {
-  AtomicOutputFile f(path.string());
+  impl::io::AtomicFile f(path.string());
   f.stream() << text;
   f.commit();
 }

@@ -8,17 +8,20 @@
 #include <memory>
 #include <optional>
 
-#include "apps/swarmcheck/output_file.hpp"
+#include "impl/io/atomic_file.hpp"
 #include "apps/swarmcheck/verb.hpp"
-#include "model/exploration/exploration_model.hpp"
+#include "conformance/exploration/engine.hpp"
+#include "conformance/exploration/summary.hpp"
 #include "swarmcheck/exploration.hpp"
 #include "spec/exploration/scenario.hpp"
 #include "spec/exploration/trace.hpp"
+#include "views/run_recorder.hpp"
 
 namespace swarmcheck::cli {
 namespace {
 
 using namespace swarmcheck::exploration;
+namespace cx = swarmcheck::conformance::exploration;
 
 struct RunOptions {
   std::string scenario_path;   // empty: the built-in default
@@ -27,6 +30,8 @@ struct RunOptions {
   std::optional<int64_t> steps;
   std::string trace_path;
   int64_t trace_every = 1;
+  int64_t trace_field = 0;     // 0: no field records
+  std::string svg_path;
   std::string engine = "impl";
   bool json = false;
 };
@@ -66,28 +71,17 @@ class Progress {
   std::chrono::steady_clock::time_point last_;
 };
 
-void print_summary(const Scenario& s, const RunOptions& o, int64_t steps, int64_t planning_steps,
-                   double eP, double sTime, int64_t visited, int64_t free_cells,
-                   std::optional<int64_t> completion) {
+void print_summary(const Scenario& s, const RunOptions& o, const cx::Simulation& sim) {
   if (o.json) {
-    json_io::Json j = json_io::Json::object();
-    j["completed"] = completion.has_value();
-    j["completion_step"] = completion ? json_io::Json(*completion) : json_io::Json(nullptr);
-    j["steps"] = steps;
-    j["planning_steps"] = planning_steps;
-    j["eP"] = eP;
-    j["sTime"] = sTime;
-    j["visited"] = visited;
-    j["free_cells"] = free_cells;
-    j["rule"] = json_io::enum_to_string(s.rule);
-    j["mode"] = json_io::enum_to_string(s.mode);
-    j["seed"] = s.seed;
-    j["map_size"] = s.map_size;
-    j["robots"] = s.robots.size();
+    json_io::Json j = cx::run_summary(sim);
     j["engine"] = o.engine;
     fmt::print("{}\n", j.dump());
     return;
   }
+  const auto completion = sim.completion_step();
+  const double eP = sim.eP(), sTime = sim.sTime();
+  const int64_t steps = sim.steps(), planning_steps = sim.planning_steps(), visited = sim.visited(),
+                free_cells = sim.free_cells();
   fmt::print("swarmcheck run: {} (map {}x{}, {} robots, {} obstacles), rule {}, mode {}, seed {}\n",
              o.scenario_path.empty() ? "default scenario" : o.scenario_path, s.map_size,
              s.map_size, s.robots.size(), s.obstacles.size(), json_io::enum_to_string(s.rule),
@@ -102,53 +96,38 @@ void print_summary(const Scenario& s, const RunOptions& o, int64_t steps, int64_
                steps, eP, visited, free_cells, planning_steps);
 }
 
-// Runs any engine with the model's interface (step, done, steps, record, completion_step).
-template <class Sim>
-int run_with(Sim& sim, const Scenario& s, const RunOptions& o) {
-  std::unique_ptr<AtomicOutputFile> trace;
-  if (!o.trace_path.empty()) {
-    trace = std::make_unique<AtomicOutputFile>(o.trace_path);
-    trace->stream() << trace_header(s).dump() << '\n';
+// Runs either engine (the library, or the reference model through the harness).
+int run_with(conformance::exploration::Simulation& sim, const Scenario& s, const RunOptions& o) {
+  std::unique_ptr<impl::io::AtomicFile> trace;
+  if (!o.trace_path.empty()) trace = std::make_unique<impl::io::AtomicFile>(o.trace_path);
+  views::RunRecorder recorder(s, {o.trace_field, o.svg_path, o.scenario_path.empty() ? "default scenario" : o.scenario_path},
+                              trace ? &trace->stream() : nullptr);
+  if (trace) {
+    trace->stream() << recorder.header(trace_header(s)).dump() << '\n';
     trace->stream() << trace_line(sim.record()) << '\n';
   }
+  recorder.observe(sim);
   Progress progress;
   while (!sim.done()) {
     sim.step();
     if (trace && (sim.steps() % o.trace_every == 0 || sim.done())) trace->stream() << trace_line(sim.record()) << '\n';
+    recorder.observe(sim);
     if (sim.steps() % 4096 == 0) progress.update(sim.steps(), sim.eP(), s.max_steps);
   }
   progress.finish();
+  recorder.finish(sim);
   if (trace) trace->commit();
-  print_summary(s, o, sim.steps(), sim.planning_steps(), sim.eP(), sim.sTime(), sim.visited(),
-                sim.free_cells(), sim.completion_step());
+  print_summary(s, o, sim);
   return 0;
 }
 
-// The reference model behind the same interface.
-struct ModelEngine {
-  explicit ModelEngine(const Scenario& s) : m(s) {}
-  model::ExplorationModel m;
-  void step() { m.step(); }
-  bool done() const { return m.done(); }
-  int64_t steps() const { return m.steps(); }
-  StepRecord record() const { return m.record(); }
-  int64_t planning_steps() const { return m.environment().planning_steps(); }
-  double eP() const { return m.environment().eP(); }
-  double sTime() const { return m.environment().sTime(); }
-  int64_t visited() const { return m.environment().visited(); }
-  int64_t free_cells() const { return m.environment().free_cells(); }
-  std::optional<int64_t> completion_step() const { return m.environment().completion_step(); }
-};
-
 int run(const RunOptions& o) {
   if (o.trace_every < 1) throw InputError("--trace-every", "expected an integer >= 1");
+  if (o.trace_field < 0) throw InputError("--trace-field", "expected an integer >= 1");
+  if (o.trace_field > 0 && o.trace_path.empty()) throw InputError("--trace-field", "needs --trace FILE");
   const Scenario s = resolve_scenario(o);
-  if (o.engine == "model") {
-    ModelEngine m(s);
-    return run_with(m, s, o);
-  }
-  Exploration x(s);
-  return run_with(x, s, o);
+  const auto sim = cx::make_simulation(o.engine == "model" ? cx::Engine::model : cx::Engine::impl, s);
+  return run_with(*sim, s, o);
 }
 
 }  // namespace
@@ -161,13 +140,19 @@ void add_run_verb(CLI::App& app, int& exit_code) {
       ->check(CLI::ExistingFile);
   cmd->add_option("--mode", opts->mode, "abstract | cosim (overrides the file)")
       ->check(CLI::IsMember({"abstract", "cosim"}));
-  cmd->add_option("--rule", opts->rule, "thesis | deterministic | stochastic (overrides the file)")
-      ->check(CLI::IsMember({"thesis", "deterministic", "stochastic"}));
+  std::vector<std::string> rules;   // the rule sets' table (spec/exploration/rule_set.hpp)
+  for (const auto& row : swarmcheck::exploration::kRuleSets) rules.emplace_back(row.name);
+  cmd->add_option("--rule", opts->rule,
+                  "The rule set (overrides the file)")
+      ->check(CLI::IsMember(rules));
   cmd->add_option("--seed", opts->seed, "The run's one seed (overrides the file)");
   cmd->add_option("--steps", opts->steps, "Master steps at most (overrides max_steps)");
   cmd->add_option("--trace", opts->trace_path, "Write the JSON Lines trace to FILE");
   cmd->add_option("--trace-every", opts->trace_every, "Record every K-th step in the trace")
       ->capture_default_str();
+  cmd->add_option("--trace-field", opts->trace_field,
+                  "Also record the whole pheromone field and the visited set every K steps (trace format 2)");
+  cmd->add_option("--svg", opts->svg_path, "Write a picture of the end of the run (coverage, pheromone, paths)");
   cmd->add_option("--engine", opts->engine, "impl (the optimised library) | model (the reference)")
       ->check(CLI::IsMember({"impl", "model"}))
       ->capture_default_str();

@@ -70,7 +70,7 @@ void bench_impl(benchmark::State& state, Mode mode, int32_t robots, int32_t map)
 
 void bench_model(benchmark::State& state, Mode mode, int32_t robots, int32_t map) {
   const Scenario s = bench_scenario(mode, robots, map);
-  auto m = std::make_unique<model::ExplorationModel>(s);
+  auto m = std::make_unique<swarmcheck::model::exploration::ExplorationModel>(s);
   run_steps(state, *m, s);
 }
 

@@ -22,13 +22,13 @@
 #include <map>
 
 #include "conformance/mission/generate.hpp"
-#include "impl/mission/load.hpp"
+#include "swarmcheck/mission.hpp"
 #include "impl/mission/planner.hpp"
 #include "model/mission/thesis_dijkstra.hpp"
 
 namespace {
 
-namespace sm = swarmcheck::spec::mission;
+namespace sm = swarmcheck::mission;
 
 constexpr std::size_t kBaselineStatesMax = 2'500;
 
@@ -88,7 +88,7 @@ std::string key_of(const benchmark::State& st) {
 // The thesis's own mission: 2 robots, 4 tasks, the 72-state supervisor control2.fsm.
 void BM_Thesis(benchmark::State& st) {
   static const auto m =
-      swarmcheck::impl::mission::load_mission(SWARMCHECK_SCENARIOS "/thesis/thesis-mission.json");
+      swarmcheck::mission::load_mission(SWARMCHECK_SCENARIOS "/thesis/thesis-mission.json");
   run(st, "thesis", m);
 }
 BENCHMARK(BM_Thesis)->Unit(benchmark::kMillisecond);

@@ -36,7 +36,7 @@ namespace {
 
 namespace impl = swarmcheck::impl::supervisor;
 namespace model = swarmcheck::model::supervisor;
-using swarmcheck::spec::supervisor::Automaton;
+using swarmcheck::supervisor::Automaton;
 
 // The model is run while its result (product) or product (synthesis) has at most `model_max`
 // states, a per-family bound chosen to keep it under about 20 s: on the line its product costs

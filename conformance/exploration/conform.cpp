@@ -1,44 +1,30 @@
 #include "conformance/exploration/conform.hpp"
 
 #include <rapidcheck.h>
-#include <rapidcheck/detail/Configuration.h>
 
+#include <algorithm>
 #include <filesystem>
-#include <iostream>
-#include <sstream>
 
+#include "conformance/common/campaign.hpp"
 #include "conformance/exploration/trace_io.hpp"
+#include "spec/util/hana_json.hpp"
 #include "spec/util/input_error.hpp"
 
-namespace swarmcheck::conformance {
+namespace swarmcheck::conformance::exploration {
 namespace {
 
-// RapidCheck reports through a listener; ours only counts (the verb prints its own report).
-class CountingListener : public rc::detail::TestListener {
- public:
-  CountingListener(const ConformOptions& o, ConformReport& r) : options_(o), report_(r) {}
-  void onTestCaseFinished(const rc::detail::CaseDescription&) override {
-    ++report_.cases_run;
-    if (options_.on_case) options_.on_case(report_.cases_run, options_.cases);
-  }
-  void onShrinkTried(const rc::detail::CaseDescription&, bool accepted) override {
-    if (accepted && report_.counterexample) ++report_.counterexample->shrinks;
-  }
-  void onTestFinished(const rc::detail::TestMetadata&, const rc::detail::TestResult&) override {}
-
- private:
-  const ConformOptions& options_;
-  ConformReport& report_;
-};
-
-// RapidCheck announces its global random seed on stderr when it first loads its configuration.
-// This campaign passes its own seed explicitly, so that banner would only mislead: load the
-// configuration once with std::cerr muted.
-void silence_rapidcheck_banner() {
-  std::ostringstream sink;
-  std::streambuf* saved = std::cerr.rdbuf(sink.rdbuf());
-  (void)rc::detail::configuration();
-  std::cerr.rdbuf(saved);
+void note_coverage(const ExplorationCase& c, const LockstepReach& r, Coverage& cov) {
+  ++cov.cases_by_family[std::string(family_name(c.family))];
+  ++cov.cases_by_rule_mode[json_io::enum_to_string(c.scenario.rule) + "/" + json_io::enum_to_string(c.scenario.mode)];
+  cov.grouped_cases += c.grouped ? 1 : 0;
+  cov.longest_run_steps = std::max(cov.longest_run_steps, r.steps);
+  cov.max_cell_age = std::max(cov.max_cell_age, r.max_cell_age);
+  cov.cases_age_past_2_12 += r.max_cell_age >= 4096 ? 1 : 0;
+  cov.cases_steps_past_2_15 += r.steps >= 32768 ? 1 : 0;
+  cov.negative_zero_starts += r.negative_zero_start ? 1 : 0;
+  cov.off_centre_starts += r.off_centre_start ? 1 : 0;
+  cov.heading_near_pi_cases += r.heading_near_pi ? 1 : 0;
+  cov.completed_cases += r.completed ? 1 : 0;
 }
 
 }  // namespace
@@ -51,28 +37,24 @@ ConformReport run_conform(const ConformOptions& o) {
   std::optional<std::pair<ExplorationCase, Divergence>> last_failure;
   const auto property = [&] {
     const ExplorationCase c = *gen_exploration_case(o.max_steps);
-    const auto d = run_lockstep(c.scenario, impl_options(c));
+    LockstepReach reach;
+    const auto d = run_lockstep(c.scenario, impl_options(c), &reach);
+    if (!report.counterexample) note_coverage(c, reach, report.coverage);
     if (d) {
       last_failure.emplace(c, *d);
       if (!report.counterexample) report.counterexample.emplace();
     }
     RC_ASSERT(!d.has_value());
   };
-  silence_rapidcheck_banner();
-  rc::detail::TestParams params;
-  params.seed = o.seed;
-  params.maxSuccess = o.cases;
-  params.maxSize = 100;
-  CountingListener listener(o, report);
-  rc::detail::TestMetadata metadata;
-  metadata.id = "swarmcheck conform";
-  metadata.description = "impl equals model bit for bit";
-  rc::detail::checkTestable(property, metadata, params, listener);
+  const CampaignRun run = run_campaign("exploration: impl equals model bit for bit", o.seed, o.cases, property,
+                                      o.on_case);
+  report.cases_run = run.cases_run;
   if (!last_failure) {
     report.counterexample.reset();
     return report;
   }
   Counterexample& cx = *report.counterexample;
+  cx.shrinks = run.shrinks;
   cx.minimal = last_failure->first;
   cx.divergence = last_failure->second;
   std::error_code ec;
@@ -84,4 +66,4 @@ ConformReport run_conform(const ConformOptions& o) {
   return report;
 }
 
-}  // namespace swarmcheck::conformance
+}  // namespace swarmcheck::conformance::exploration

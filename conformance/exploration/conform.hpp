@@ -4,13 +4,14 @@
 // One seed drives everything: the same options give the same cases and the same counterexample.
 #include <cstdint>
 #include <functional>
+#include <map>
 #include <optional>
 #include <string>
 
 #include "conformance/exploration/generators.hpp"
 #include "conformance/exploration/lockstep.hpp"
 
-namespace swarmcheck::conformance {
+namespace swarmcheck::conformance::exploration {
 
 struct ConformOptions {
   int cases = 200;             // generated cases (RapidCheck's max_success)
@@ -28,11 +29,28 @@ struct Counterexample {
   int shrinks = 0;             // accepted shrink steps
 };
 
+// What the campaign reached, by the classes of state a fault may hide in (conform --stats,
+// docs/harness.md): the cases of each family and what they got to.
+struct Coverage {
+  std::map<std::string, int> cases_by_family;      // standard, long_horizon, edge_poses
+  std::map<std::string, int> cases_by_rule_mode;   // "thesis/abstract", ...
+  int grouped_cases = 0;            // the impl planned by parallel groups
+  int64_t longest_run_steps = 0;
+  int64_t max_cell_age = 0;         // ticks between a nonzero cell's write and its evaluation
+  int cases_age_past_2_12 = 0;      // past the lazy grid's decay table (4096)
+  int cases_steps_past_2_15 = 0;    // ticks past 32768
+  int negative_zero_starts = 0;     // cases with a robot starting at -0.0
+  int off_centre_starts = 0;        // cases with a robot starting off its cell's centre
+  int heading_near_pi_cases = 0;    // cases where a heading came within 0.05 rad of +-pi
+  int completed_cases = 0;          // completion step, eP freeze and summary compared
+};
+
 struct ConformReport {
   int cases_run = 0;
+  Coverage coverage;                // of the cases before the first divergence
   std::optional<Counterexample> counterexample;
 };
 
 ConformReport run_conform(const ConformOptions& o);
 
-}  // namespace swarmcheck::conformance
+}  // namespace swarmcheck::conformance::exploration

@@ -1,13 +1,24 @@
 #include "conformance/exploration/generators.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <numeric>
 
+#include "spec/exploration/neighbourhood.hpp"
 #include "spec/exploration/scenario.hpp"
 
-namespace swarmcheck::conformance {
+namespace swarmcheck::conformance::exploration {
 
-using namespace exploration;
+using namespace swarmcheck::exploration;
+
+std::string_view family_name(Family f) {
+  switch (f) {
+    case Family::standard: return "standard";
+    case Family::long_horizon: return "long_horizon";
+    case Family::edge_poses: return "edge_poses";
+  }
+  return "?";
+}
 
 namespace {
 
@@ -29,41 +40,127 @@ Params gen_params(int32_t map_size) {
   return p;
 }
 
+// A random permutation of a map's first cells, drawn from RapidCheck so that it shrinks.
+std::vector<int32_t> gen_cell_order(int32_t cells, int32_t placed_max) {
+  std::vector<int32_t> order(static_cast<std::size_t>(cells));
+  std::iota(order.begin(), order.end(), 0);
+  for (int32_t k = 0; k < placed_max; ++k)
+    std::swap(order[static_cast<std::size_t>(k)],
+              order[*rc::gen::inRange<std::size_t>(static_cast<std::size_t>(k), order.size())]);
+  return order;
+}
+
+Point_m centre_point(int32_t cell, const Scenario& s) {
+  return centre_of(CellIndex{cell / s.map_size, cell % s.map_size}, s.cell_size);
+}
+
+ExplorationCase gen_standard(int64_t max_steps) {
+  ExplorationCase c;
+  Scenario& s = c.scenario;
+  s = default_scenario();
+  s.map_size = *rc::gen::inRange<int32_t>(1, 65);   // size-scaled: small maps come first
+  const int32_t cells = s.map_size * s.map_size;
+  const int32_t placed_max = std::min(cells, 400);
+  const std::vector<int32_t> order = gen_cell_order(cells, placed_max);
+  const int32_t robots = *rc::gen::inRange<int32_t>(1, std::max(2, std::min(placed_max, cells * 2 / 3) + 1));
+  const int32_t obstacles = *rc::gen::inRange<int32_t>(0, std::max(1, std::min(placed_max - robots, cells / 3) + 1));
+  s.cell_size = *rc::gen::element(1.0, 0.5, 3.0);
+  s.robots.clear();
+  s.obstacles.clear();
+  for (int32_t k = 0; k < robots; ++k) s.robots.push_back(centre_point(order[static_cast<std::size_t>(k)], s));
+  for (int32_t k = robots; k < robots + obstacles; ++k) {
+    const int32_t cell = order[static_cast<std::size_t>(k)];
+    s.obstacles.push_back({cell / s.map_size, cell % s.map_size});
+  }
+  s.rule = *rc::gen::elementOf(all_rule_sets());
+  s.mode = *rc::gen::weightedOneOf<Mode>({{3, rc::gen::just(Mode::abstract)}, {1, rc::gen::just(Mode::cosim)}});
+  s.seed = *rc::gen::arbitrary<uint64_t>();
+  s.params = gen_params(s.map_size);
+  s.max_steps = s.mode == Mode::cosim ? 3 * max_steps : max_steps;   // cosim plans every ~100 steps
+  return c;
+}
+
+// A free pocket in the far corner walled in by every cell within s_range of it, so that no
+// window ever reaches it: the pocket is never visited and the run goes on to max_steps. Pheromone
+// left near the start is read again only much later, and the digest evaluates every cell each step.
+ExplorationCase gen_long_horizon() {
+  ExplorationCase c;
+  c.family = Family::long_horizon;
+  Scenario& s = c.scenario;
+  s = default_scenario();
+  s.params = default_params();
+  s.params.s_range = *rc::gen::element(1, 2);
+  const int32_t wall = s.params.s_range;
+  s.map_size = *rc::gen::inRange<int32_t>(wall + 3, 25);
+  const int32_t n = s.map_size;
+  s.obstacles.clear();
+  std::vector<int32_t> free_cells;
+  for (int32_t i = 0; i < n; ++i)
+    for (int32_t j = 0; j < n; ++j) {
+      const int32_t d = std::max(n - 1 - i, n - 1 - j);   // Chebyshev distance to the pocket
+      if (d >= 1 && d <= wall) s.obstacles.push_back({i, j});
+      if (d > wall) free_cells.push_back(i * n + j);
+    }
+  const auto reachable = static_cast<int32_t>(free_cells.size());
+  const int32_t robots = *rc::gen::inRange<int32_t>(1, std::max(2, std::min(4, reachable / 3) + 1));
+  const std::vector<int32_t> order = gen_cell_order(reachable, robots);
+  s.robots.clear();
+  for (int32_t k = 0; k < robots; ++k)
+    s.robots.push_back(centre_point(free_cells[static_cast<std::size_t>(order[static_cast<std::size_t>(k)])], s));
+  s.rule = *rc::gen::elementOf(all_rule_sets());
+  // cosim plans once per drive (about a hundred master steps), so cells age by thousands of ticks
+  // between two visits even on small maps.
+  s.mode = *rc::gen::element(Mode::cosim, Mode::abstract);
+  if (s.mode == Mode::cosim) s.params.step_size = *rc::gen::element(0.05, 0.1);
+  s.seed = *rc::gen::arbitrary<uint64_t>();
+  // Slow evaporation, so that values written thousands of steps ago are still far from zero.
+  s.params.ertu = *rc::gen::element(0.001, 0.01, 0.0001);
+  s.max_steps = *rc::gen::element<int64_t>(4100, 5000, 9000, 20000, 70000);   // shrinks to the first
+  return c;
+}
+
+// A start position in cell (i, j) that is not the centre: the lower edges, a few ulps below the
+// upper edges, -0.0 on the map's own lower edges, and tiny offsets.
+Point_m gen_edge_point(int32_t i, int32_t j, double cell_m) {
+  const auto coord = [cell_m](int32_t k) {
+    const double lo = k * cell_m, hi = (k + 1) * cell_m;
+    const int ulps = *rc::gen::inRange(1, 4);
+    double below = hi;
+    for (int u = 0; u < ulps; ++u) below = std::nextafter(below, 0.0);
+    return *rc::gen::element(lo, below, k == 0 ? -0.0 : lo, lo + 1e-12 * cell_m, (k + 0.5) * cell_m,
+                             std::nextafter(lo, hi));
+  };
+  return Point_m{coord(i), coord(j)};
+}
+
+ExplorationCase gen_edge_poses(int64_t max_steps) {
+  ExplorationCase c = gen_standard(max_steps);
+  c.family = Family::edge_poses;
+  Scenario& s = c.scenario;
+  s.map_size = std::max(s.map_size, 2);
+  s.mode = *rc::gen::weightedOneOf<Mode>({{1, rc::gen::just(Mode::abstract)}, {4, rc::gen::just(Mode::cosim)}});
+  if (s.mode == Mode::cosim) s.params.step_size = std::min(s.params.step_size, kCosimStepMax_s);
+  s.max_steps = s.mode == Mode::cosim ? 6 * max_steps : max_steps;
+  for (Point_m& p : s.robots) {
+    const CellIndex cell = cell_of(p, s.cell_size);
+    const Point_m q = gen_edge_point(cell[0], cell[1], s.cell_size);
+    if (cell_of(q, s.cell_size) == cell) p = q;   // rounding may land on a neighbour: keep the centre
+  }
+  return c;
+}
+
 }  // namespace
 
 rc::Gen<ExplorationCase> gen_exploration_case(int64_t max_steps) {
   return rc::gen::exec([max_steps] {
-    ExplorationCase c;
-    Scenario& s = c.scenario;
-    s = default_scenario();
-    s.map_size = *rc::gen::inRange<int32_t>(1, 65);   // size-scaled: small maps come first
-    const int32_t cells = s.map_size * s.map_size;
-    // A random permutation of the cells, drawn from RapidCheck so that it shrinks.
-    std::vector<int32_t> order(static_cast<std::size_t>(cells));
-    std::iota(order.begin(), order.end(), 0);
-    const int32_t placed_max = std::min(cells, 400);
-    for (int32_t k = 0; k < placed_max; ++k)
-      std::swap(order[static_cast<std::size_t>(k)], order[*rc::gen::inRange<std::size_t>(static_cast<std::size_t>(k), order.size())]);
-    const int32_t robots = *rc::gen::inRange<int32_t>(1, std::max(2, std::min(placed_max, cells * 2 / 3) + 1));
-    const int32_t obstacles = *rc::gen::inRange<int32_t>(0, std::max(1, std::min(placed_max - robots, cells / 3) + 1));
-    s.cell_size = *rc::gen::element(1.0, 0.5, 3.0);
-    s.robots.clear();
-    s.obstacles.clear();
-    for (int32_t k = 0; k < robots; ++k) {
-      const int32_t cell = order[static_cast<std::size_t>(k)];
-      s.robots.push_back({(cell / s.map_size + 0.5) * s.cell_size, (cell % s.map_size + 0.5) * s.cell_size});
-    }
-    for (int32_t k = robots; k < robots + obstacles; ++k) {
-      const int32_t cell = order[static_cast<std::size_t>(k)];
-      s.obstacles.push_back({cell / s.map_size, cell % s.map_size});
-    }
-    s.rule = *rc::gen::element(RuleSet::thesis, RuleSet::deterministic, RuleSet::stochastic);
-    s.mode = *rc::gen::weightedOneOf<Mode>({{3, rc::gen::just(Mode::abstract)}, {1, rc::gen::just(Mode::cosim)}});
-    s.seed = *rc::gen::arbitrary<uint64_t>();
-    s.params = gen_params(s.map_size);
-    s.max_steps = s.mode == Mode::cosim ? 3 * max_steps : max_steps;   // cosim plans every ~100 steps
+    const auto family = *rc::gen::weightedOneOf<Family>({{16, rc::gen::just(Family::standard)},
+                                                         {2, rc::gen::just(Family::long_horizon)},
+                                                         {3, rc::gen::just(Family::edge_poses)}});
+    ExplorationCase c = family == Family::standard       ? gen_standard(max_steps)
+                        : family == Family::long_horizon ? gen_long_horizon()
+                                                         : gen_edge_poses(max_steps);
     c.grouped = *rc::gen::arbitrary<bool>();
-    validate(s);
+    validate(c.scenario);
     return c;
   });
 }
@@ -77,4 +174,4 @@ ExplorationOptions impl_options(const ExplorationCase& c) {
   return o;
 }
 
-}  // namespace swarmcheck::conformance
+}  // namespace swarmcheck::conformance::exploration

@@ -1,24 +1,40 @@
 #pragma once
-// RapidCheck generators of exploration cases for the differential harness (type-directed, so
-// nearly every case is a valid scenario that reaches deep code): maps 1..64, robots from one to
-// a good share of the free cells, obstacles, every rule set and mode, parameters including their
-// edge values (phi <= 0, ertu * step_size >= 1, s_range beyond the map, epsilon 0, tiny and huge
-// a1 / a2), seeds; and whether the impl plans by parallel groups even for few robots.
+// RapidCheck generators of exploration cases for the differential harness. Type-directed, so
+// nearly every case is a valid scenario that reaches deep code, and built by families so that
+// each class of state a fault could hide in is reached by construction, not by luck:
+//   standard:      maps 1..64, robots from one to a good share of the free cells, obstacles,
+//                  every rule set and mode, parameters with their edge values (phi <= 0,
+//                  ertu * step_size >= 1, s_range beyond the map, epsilon 0, tiny and huge a1, a2)
+//   long_horizon:  small maps with a walled-in pocket no robot can reach, so the run never
+//                  completes: thousands of steps, some beyond 2^15, with cells read long after
+//                  they were written (lazy decay at large ages, tick counters past powers of two)
+//   edge_poses:    robots starting off the cell centres: on a cell's lower edge, a few ulps
+//                  below the next edge, at -0.0, tiny offsets; cosim mostly, so that controllers
+//                  and bodies run from them (and reach headings around +-pi)
+// Every family draws whether the impl plans by parallel groups even for few robots.
 #include <rapidcheck.h>
+
+#include <cstdint>
+#include <string_view>
 
 #include "spec/exploration/types.hpp"
 #include "swarmcheck/exploration.hpp"
 
-namespace swarmcheck::conformance {
+namespace swarmcheck::conformance::exploration {
+
+enum class Family { standard, long_horizon, edge_poses };
+std::string_view family_name(Family f);
 
 struct ExplorationCase {
-  exploration::Scenario scenario;
+  swarmcheck::exploration::Scenario scenario;
+  Family family = Family::standard;
   bool grouped = false;   // impl option: plan by independent groups (parallel path) always
 };
 
-// max_steps: the steps each case runs at most (the scenario's max_steps is set to it).
+// max_steps: the steps a standard case runs at most (the scenario's max_steps is set from it;
+// long-horizon cases run far longer by design).
 rc::Gen<ExplorationCase> gen_exploration_case(int64_t max_steps);
 
 ExplorationOptions impl_options(const ExplorationCase& c);
 
-}  // namespace swarmcheck::conformance
+}  // namespace swarmcheck::conformance::exploration

@@ -1,18 +1,18 @@
 #include "conformance/exploration/trace_io.hpp"
 
-#include <filesystem>
 #include <fstream>
-#include <unistd.h>
 
+#include "impl/io/atomic_file.hpp"
+#include "conformance/exploration/observe.hpp"
 #include "model/exploration/exploration_model.hpp"
 #include "spec/exploration/scenario.hpp"
 #include "spec/exploration/trace.hpp"
 #include "spec/util/hana_diff.hpp"
 #include "spec/util/input_error.hpp"
 
-namespace swarmcheck::conformance {
+namespace swarmcheck::conformance::exploration {
 
-using namespace exploration;
+using namespace swarmcheck::exploration;
 using json_io::Json;
 
 void write_counterexample(const std::string& path, const ExplorationCase& c, const Divergence& d) {
@@ -22,20 +22,16 @@ void write_counterexample(const std::string& path, const ExplorationCase& c, con
   header["impl_options"] = {{"grouped", c.grouped}};
   header["divergence"] = {{"step", d.step}, {"path", d.path}, {"model", d.model}, {"impl", d.impl},
                           {"spec_violation", d.spec_violation}, {"text", d.describe()}};
-  const std::string tmp = path + ".tmp-" + std::to_string(::getpid());
-  {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    if (!out) throw InputError(path, "cannot write the counterexample trace");
-    out << header.dump() << '\n';
-    model::ExplorationModel m(s);
+  impl::io::AtomicFile file(path);
+  std::ofstream& out = file.stream();
+  out << header.dump() << '\n';
+  swarmcheck::model::exploration::ExplorationModel m(s);
+  out << trace_line(m.record()) << '\n';
+  while (m.steps() < d.step) {
+    m.step();
     out << trace_line(m.record()) << '\n';
-    while (m.steps() < d.step) {
-      m.step();
-      out << trace_line(m.record()) << '\n';
-    }
-    if (!out) throw InputError(path, "writing the counterexample trace failed");
   }
-  std::filesystem::rename(tmp, path);
+  file.commit();
 }
 
 namespace {
@@ -52,6 +48,9 @@ struct TraceHeader {
   Scenario scenario;
   ExplorationOptions options;
   std::optional<std::string> recorded;
+  // A counterexample's divergence in an output besides the records (observe.hpp): its step, path
+  // and the model's value, re-checked after the records.
+  std::optional<Divergence> derived;
 };
 
 TraceHeader read_header(const Json& h, const std::string& where) {
@@ -70,7 +69,14 @@ TraceHeader read_header(const Json& h, const std::string& where) {
     t.options.parallel_min_robots = 1;
     t.options.parallel_min_bodies = 1;
   }
-  if (h.contains("divergence")) t.recorded = h["divergence"].value("text", "");
+  if (h.contains("divergence") && h["divergence"].is_object()) {
+    const Json& d = h["divergence"];
+    t.recorded = d.value("text", "");
+    const std::string derived_path = d.value("path", "");
+    if (d.contains("step") && d["step"].is_number_integer() && d.contains("model") && d["model"].is_string() &&
+        is_derived_path(derived_path))
+      t.derived = Divergence{d["step"].get<int64_t>(), derived_path, d["model"].get<std::string>(), "", false};
+  }
   return t;
 }
 
@@ -81,8 +87,17 @@ StepRecord record_at(Sim& sim, int64_t step) {
   return sim.record();
 }
 
+// After the records: the output a counterexample's divergence names, at its step.
 template <class Sim>
-ReplayResult replay_with(Sim& sim, std::ifstream& in, const std::string& path, ReplayResult result) {
+void recheck_derived(Sim& sim, const Divergence& recorded, ReplayResult& result) {
+  if (sim.steps() != recorded.step) return;
+  const std::string now = observe(sim, recorded.path).value_or("?");
+  if (now != recorded.model) result.divergence = Divergence{recorded.step, recorded.path, recorded.model, now, false};
+}
+
+template <class Sim>
+ReplayResult replay_with(Sim& sim, std::ifstream& in, const std::string& path, ReplayResult result,
+                         const std::optional<Divergence>& derived) {
   std::string line;
   int64_t lineno = 1;
   while (std::getline(in, line)) {
@@ -91,7 +106,9 @@ ReplayResult replay_with(Sim& sim, std::ifstream& in, const std::string& path, R
     const std::string where = path + ":" + std::to_string(lineno);
     StepRecord expected;
     try {
-      json_io::from_json(parse_line(line, where), "", expected);
+      const Json j = parse_line(line, where);
+      if (j.is_object() && j.value("type", "") == "field") continue;  // format 2: field records
+      json_io::from_json(j, "", expected);
     } catch (const InputError& e) {
       throw InputError(where, std::string("expected a step record: ") + e.what());
     }
@@ -107,6 +124,7 @@ ReplayResult replay_with(Sim& sim, std::ifstream& in, const std::string& path, R
       return result;
     }
   }
+  if (derived) recheck_derived(sim, *derived, result);
   return result;
 }
 
@@ -120,12 +138,8 @@ ReplayResult replay_trace(const std::string& path, Engine engine) {
   const TraceHeader h = read_header(parse_line(first, path + ":1"), path + ":1");
   ReplayResult result;
   result.recorded = h.recorded;
-  if (engine == Engine::model) {
-    model::ExplorationModel m(h.scenario);
-    return replay_with(m, in, path, result);
-  }
-  Exploration x(h.scenario, h.options);
-  return replay_with(x, in, path, result);
+  const std::unique_ptr<Simulation> sim = make_simulation(engine, h.scenario, h.options);
+  return replay_with(*sim, in, path, result, h.derived);
 }
 
-}  // namespace swarmcheck::conformance
+}  // namespace swarmcheck::conformance::exploration

@@ -6,15 +6,14 @@
 #include <optional>
 #include <string>
 
+#include "conformance/exploration/engine.hpp"
 #include "conformance/exploration/generators.hpp"
 #include "conformance/exploration/lockstep.hpp"
 
-namespace swarmcheck::conformance {
+namespace swarmcheck::conformance::exploration {
 
 // Writes the counterexample trace of case c (nothing half-written: temporary file + rename).
 void write_counterexample(const std::string& path, const ExplorationCase& c, const Divergence& d);
-
-enum class Engine { model, impl };
 
 struct ReplayResult {
   int64_t records = 0;                  // records compared
@@ -25,4 +24,4 @@ struct ReplayResult {
 // Throws InputError("file:line", ...) for a malformed trace.
 ReplayResult replay_trace(const std::string& path, Engine engine);
 
-}  // namespace swarmcheck::conformance
+}  // namespace swarmcheck::conformance::exploration

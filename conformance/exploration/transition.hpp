@@ -5,9 +5,9 @@
 
 #include "spec/exploration/types.hpp"
 
-namespace swarmcheck::conformance {
+namespace swarmcheck::conformance::exploration {
 
-std::string check_transition(const exploration::Scenario& s, const exploration::StepRecord& before,
-                             const exploration::StepRecord& after);
+std::string check_transition(const swarmcheck::exploration::Scenario& s, const swarmcheck::exploration::StepRecord& before,
+                             const swarmcheck::exploration::StepRecord& after);
 
-}  // namespace swarmcheck::conformance
+}  // namespace swarmcheck::conformance::exploration

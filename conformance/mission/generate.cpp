@@ -7,8 +7,8 @@
 
 namespace swarmcheck::conformance::mission {
 
-namespace sm = spec::mission;
-namespace sv = spec::supervisor;
+namespace sm = swarmcheck::mission;
+namespace sv = swarmcheck::supervisor;
 
 namespace {
 
@@ -26,13 +26,33 @@ sm::Mission skeleton(std::size_t robots, const std::vector<sm::Point>& starts,
 
 }  // namespace
 
-rc::Gen<sm::Mission> random_small_mission() {
-  return rc::gen::exec([] {
+namespace {
+
+rc::Gen<sm::Point> any_point() {
+  auto coord = rc::gen::map(rc::gen::inRange(-10, 11), [](int v) { return double(v); });
+  return rc::gen::apply([](double x, double y) { return sm::Point{x, y}; }, coord, coord);
+}
+
+rc::Gen<sm::Point> lattice_point() {
+  return rc::gen::apply([](double x, double y) { return sm::Point{x, y}; }, rc::gen::element(-3.0, 0.0, 3.0),
+                        rc::gen::element(-4.0, 0.0, 4.0));
+}
+
+// Starts inside a region would fire its entry at time 0, which the FSM may not enable (the
+// mission checker refuses that): a start inside the region around x, y > 0 or x, y < 0 is
+// mirrored across the x axis (outside both), one on a task's square moved 8 m down.
+void starts_outside_regions(sm::Mission& m) {
+  for (auto& r : m.robots)
+    for (int pass = 0; pass < 4; ++pass)
+      for (const auto& g : m.regions)
+        if (sm::inside(g, r.start)) r.start[1] = g.hi[0] - g.lo[0] == 10 ? -r.start[1] : r.start[1] - 8;
+}
+
+sm::Mission small_mission(const rc::Gen<sm::Point>& point) {
+  return *rc::gen::exec([point] {
     const auto robots = *rc::gen::inRange<std::size_t>(1, 4);
     const auto ntasks = *rc::gen::inRange<std::size_t>(1, 4);
     const auto states = *rc::gen::inRange<std::size_t>(2, 7);
-    auto coord = rc::gen::map(rc::gen::inRange(-10, 11), [](int v) { return double(v); });
-    auto point = rc::gen::apply([](double x, double y) { return sm::Point{x, y}; }, coord, coord);
     std::vector<sm::Point> starts, tasks;
     for (std::size_t r = 0; r < robots; ++r) starts.push_back(*point);
     for (std::size_t t = 0; t < ntasks; ++t) tasks.push_back(*point);
@@ -71,6 +91,82 @@ rc::Gen<sm::Mission> random_small_mission() {
       }
     }
     m.initial_state = m.fsm.states[0];
+    starts_outside_regions(m);
+    return m;
+  });
+}
+
+}  // namespace
+
+rc::Gen<sm::Mission> random_small_mission() {
+  return rc::gen::exec([] { return small_mission(any_point()); });
+}
+
+// Branches from q0 to the one marked state, each 1..3 events: task starts of random robots, and
+// region entries (no cost, but a longer path), so that branches tie on the makespan on the
+// lattice while their totals and lengths differ.
+rc::Gen<sm::Mission> tie_mission() {
+  return rc::gen::exec([] {
+    sm::Mission m = small_mission(lattice_point());
+    m.fsm.delta.clear();
+    m.fsm.marked.clear();
+    m.marked_states.clear();
+    std::vector<std::string> starts, entries;
+    for (const auto& [e, attr] : m.fsm.events) (attr.controllable ? starts : entries).push_back(e);
+    const std::string goal = m.fsm.states.back();
+    m.fsm.marked.insert(goal);
+    m.marked_states.push_back(goal);
+    // Each branch: 1..2 task starts and 0..2 region entries, in a random order, through states
+    // of its own.
+    const auto branches = *rc::gen::inRange<std::size_t>(2, 5);
+    for (std::size_t b = 0; b < branches; ++b) {
+      std::vector<std::string> path;
+      const auto n_starts = *rc::gen::inRange<std::size_t>(1, 3), n_entries = *rc::gen::inRange<std::size_t>(0, 3);
+      for (std::size_t k = 0; k < n_starts; ++k) path.push_back(starts[*rc::gen::inRange<std::size_t>(0, starts.size())]);
+      for (std::size_t k = 0; k < n_entries; ++k)
+        path.insert(path.begin() + static_cast<long>(*rc::gen::inRange<std::size_t>(0, path.size() + 1)),
+                    entries[*rc::gen::inRange<std::size_t>(0, entries.size())]);
+      std::string at = m.fsm.states.front();
+      for (std::size_t k = 0; k < path.size(); ++k) {
+        std::string to = goal;
+        if (k + 1 < path.size()) {
+          to = "b" + std::to_string(b) + "_" + std::to_string(k);
+          m.fsm.states.push_back(to);
+        }
+        m.fsm.delta[at][path[k]] = to;
+        at = to;
+      }
+    }
+    return m;
+  });
+}
+
+// Robots 0 and 1 split tasks t1 and t2 either way, the FSM reconverges, then r0 does t0, r1 does t3,
+// and r0 does t4: one (state, positions) node reached with two different travel vectors, where
+// only the robot-by-robot dominance keeps the label whose continuation is better.
+rc::Gen<sm::Mission> swap_mission() {
+  return rc::gen::exec([] {
+    const auto point = *rc::gen::element(0, 1) == 0 ? lattice_point() : any_point();
+    std::vector<sm::Point> starts{*point, *point}, tasks;
+    for (int t = 0; t < 5; ++t) tasks.push_back(*point);
+    sm::Mission m = skeleton(2, starts, tasks);
+    auto start = [&](std::size_t r, std::size_t t) {
+      const std::string e = "r" + std::to_string(r) + "t" + std::to_string(t);
+      m.events[e] = sm::Meaning{sm::MeaningKind::task_start, r, t};
+      m.fsm.events[e] = sv::EventAttr{true, true};
+      return e;
+    };
+    for (const char* q : {"q0", "qa", "qb", "qc", "qd", "qe", "qm"}) m.fsm.states.push_back(q);
+    m.fsm.delta["q0"][start(0, 1)] = "qa";
+    m.fsm.delta["q0"][start(0, 2)] = "qb";
+    m.fsm.delta["qa"][start(1, 2)] = "qc";
+    m.fsm.delta["qb"][start(1, 1)] = "qc";
+    m.fsm.delta["qc"][start(0, 0)] = "qd";
+    m.fsm.delta["qd"][start(1, 3)] = "qe";
+    m.fsm.delta["qe"][start(0, 4)] = "qm";
+    m.fsm.marked.insert("qm");
+    m.marked_states.push_back("qm");
+    m.initial_state = "q0";
     return m;
   });
 }
@@ -81,6 +177,25 @@ sm::Mission allocation_mission(std::size_t robots, std::size_t tasks, std::uint6
   std::vector<sm::Point> starts, points;
   for (std::size_t r = 0; r < robots; ++r) starts.push_back({u(rng), u(rng)});
   for (std::size_t t = 0; t < tasks; ++t) points.push_back({u(rng), u(rng)});
+  return allocation_mission_at(starts, points);
+}
+
+rc::Gen<sm::Mission> small_allocation_mission() {
+  return rc::gen::exec([] {
+    const auto robots = *rc::gen::inRange<std::size_t>(2, 4);
+    const auto tasks = *rc::gen::inRange<std::size_t>(2, robots == 3 ? 3 : 4);
+    const auto point = *rc::gen::element(0, 1) == 0 ? lattice_point() : any_point();
+    std::vector<sm::Point> starts, points;
+    for (std::size_t r = 0; r < robots; ++r) starts.push_back(*point);
+    for (std::size_t t = 0; t < tasks; ++t) points.push_back(*point);
+    sm::Mission m = allocation_mission_at(starts, points);
+    starts_outside_regions(m);
+    return m;
+  });
+}
+
+sm::Mission allocation_mission_at(const std::vector<sm::Point>& starts, const std::vector<sm::Point>& points) {
+  const std::size_t robots = starts.size(), tasks = points.size();
   sm::Mission m = skeleton(robots, starts, points);
   for (std::size_t t = 0; t < tasks; ++t)
     m.regions.push_back(sm::Region{"reg" + std::to_string(t),

@@ -4,6 +4,14 @@
 // random_small_mission: 1..3 robots, 1..3 tasks, 2 regions, an FSM of 2..6 states whose edges
 //   carry random task starts (controllable, "r<r>t<t>") and region entries (uncontrollable,
 //   "r<r>g<g>") to random targets, 1..2 marked states. Small enough for brute force.
+// run_case: a mission and run options for the differential runner (impl run vs model run):
+//   1..3 robots starting outside every region, 1..3 tasks on integer points, a square region
+//   around most tasks and up to two more rectangles (integer corners, so points may lie on
+//   edges, which are outside), a task start "<robot>s<task>" and a region entry
+//   "<robot>e<region>" declared for every pair, and an FSM whose path to the marked state has
+//   robots start tasks and then enter regions (so they must drive there), plus up to three
+//   states and random edges. It passes check_mission by construction. Options: either body, dt
+//   of 0.05..0.5 s, a time limit of at most 1200 steps, speed 0.25..2 m/s.
 // allocation_mission(robots, tasks, seed): the task-allocation supervisor: a state records each
 //   task as free, in progress by one robot, or done; "r<r>s<t>" (controllable) starts a free task
 //   on an idle robot, "r<r>f<t>" (uncontrollable, entry into the 2 m square around the task) ends
@@ -12,12 +20,33 @@
 #include <rapidcheck.h>
 
 #include "spec/mission/mission.hpp"
+#include "spec/mission/run.hpp"
 
 namespace swarmcheck::conformance::mission {
 
-rc::Gen<spec::mission::Mission> random_small_mission();
+rc::Gen<swarmcheck::mission::Mission> random_small_mission();
+// Robots and tasks on the lattice {-3, 0, 3} x {-4, 0, 4} (distances mostly 3, 4, 5 and their
+// multiples), and an FSM of 2..4 branches from q0 to one marked state, each of 1..3 task starts
+// and region entries: branches tie on the makespan while totals and lengths differ.
+rc::Gen<swarmcheck::mission::Mission> tie_mission();
+// Two robots split two tasks either way and meet again in one FSM state, then more tasks follow:
+// one (state, positions) node with two travel vectors (the planner's dominance test decides).
+rc::Gen<swarmcheck::mission::Mission> swap_mission();
 
-spec::mission::Mission allocation_mission(std::size_t robots, std::size_t tasks,
+struct RunCase {
+  swarmcheck::mission::Mission mission;
+  swarmcheck::mission::RunOptions options;
+};
+rc::Gen<RunCase> run_case();
+
+swarmcheck::mission::Mission allocation_mission(std::size_t robots, std::size_t tasks,
                                           std::uint64_t seed);
+// The same supervisor with the given start and task points.
+swarmcheck::mission::Mission allocation_mission_at(const std::vector<swarmcheck::mission::Point>& starts,
+                                                   const std::vector<swarmcheck::mission::Point>& tasks);
+// A small one for brute force: 2..3 robots, 2..3 tasks (not both 3), points on the 3-4-5
+// lattice (ties) or on integer points of [-10, 10]^2. Many paths reach one (state, positions)
+// node with different travel: the planner's dominance test matters.
+rc::Gen<swarmcheck::mission::Mission> small_allocation_mission();
 
 }  // namespace swarmcheck::conformance::mission

@@ -1,7 +1,6 @@
 #include "conformance/supervisor/differential.hpp"
 
 #include <deque>
-#include <filesystem>
 #include <map>
 
 #include "impl/supervisor/fsm_io.hpp"
@@ -12,8 +11,8 @@ namespace swarmcheck::conformance::supervisor {
 
 namespace impl = swarmcheck::impl::supervisor;
 namespace model = swarmcheck::model::supervisor;
-using spec::supervisor::State;
-using spec::supervisor::StateSet;
+using swarmcheck::supervisor::State;
+using swarmcheck::supervisor::StateSet;
 
 std::string canonical(const Automaton& a) {
   Automaton c;
@@ -69,6 +68,23 @@ std::optional<std::string> differ(const std::string& what, const std::string& im
 
 }  // namespace
 
+std::optional<std::string> diff_exact(const std::string& what, const impl::Fsm& f, const Automaton& m) {
+  if (f.state_count() != m.states.size())
+    return what + ": impl has " + std::to_string(f.state_count()) + " states, model " + std::to_string(m.states.size());
+  std::map<std::string, std::size_t> first;
+  for (std::size_t i = 0; i < f.state_names.size(); ++i) {
+    const auto [it, fresh] = first.emplace(f.state_names[i], i);
+    if (!fresh)
+      return what + ": impl names states " + std::to_string(it->second) + " and " + std::to_string(i) + " both \"" +
+             f.state_names[i] + "\" (a duplicate state)";
+  }
+  for (std::size_t i = 0; i < m.states.size(); ++i)
+    if (f.state_names[i] != m.states[i])
+      return what + ": state " + std::to_string(i) + " is \"" + f.state_names[i] + "\" in impl, \"" + m.states[i] +
+             "\" in the model";
+  return differ(what + " (.fsm bytes)", impl::write_fsm(impl::decompile(f)), impl::write_fsm(m));
+}
+
 std::optional<std::string> diff_unary(const Automaton& a) {
   const impl::Fsm f = impl::compile(a);
   if (auto d = differ("accessible states", listed(names_of(f, impl::accessible_mask(f))),
@@ -82,40 +98,65 @@ std::optional<std::string> diff_unary(const Automaton& a) {
   if (auto d = differ("blocking states", listed(blocking), listed(model::blocking_states(a))))
     return d;
   if (impl::is_nonblocking(f) != model::is_nonblocking(a)) return "nonblocking differs";
-  if (auto d = differ("trim", impl::write_fsm(impl::decompile(impl::trim(f))),
-                      impl::write_fsm(model::trim(a))))
-    return d;
-  return differ("accessible part", impl::write_fsm(impl::decompile(impl::accessible_part(f))),
-                impl::write_fsm(model::accessible_part(a)));
+  if (auto d = diff_exact("trim", impl::trim(f), model::trim(a))) return d;
+  return diff_exact("accessible part", impl::accessible_part(f), model::accessible_part(a));
 }
 
-std::optional<std::string> diff_product(const Automaton& a, const Automaton& b) {
-  const impl::Fsm fa = impl::compile(a), fb = impl::compile(b);
-  const auto ip = impl::decompile(impl::product({&fa, &fb}, {"a", "b"}));
-  const auto mp = model::product({a, b}, {"a", "b"});
-  return differ("product", canonical(ip), canonical(mp));
-}
+namespace {
 
-std::optional<std::string> diff_synthesis(const Automaton& plant, const Automaton& spec) {
-  const impl::Fsm g = impl::compile(plant), s = impl::compile(spec);
-  const bool ic = impl::is_controllable(g, s), mc = model::is_controllable(plant, spec);
-  if (ic != mc)
-    return std::string("controllability differs: impl ") + (ic ? "true" : "false") +
-           ", model " + (mc ? "true" : "false");
-  return differ("supervisor", canonical(impl::decompile(impl::supcon(g, s))),
-                canonical(model::supcon(plant, spec)));
-}
-
-std::vector<std::string> write_counterexample(const std::string& dir, const std::string& stem,
-                                              const std::vector<Automaton>& automata) {
-  std::filesystem::create_directories(dir);
-  std::vector<std::string> paths;
-  for (std::size_t i = 0; i < automata.size(); ++i) {
-    const std::string path = dir + "/" + stem + "_" + std::to_string(i) + ".fsm";
-    impl::write_file_atomically(path, impl::write_fsm(automata[i]));
-    paths.push_back(path);
+// Both sides' products of the parts (named "part 1", ... in messages).
+std::pair<impl::Fsm, Automaton> both_products(const std::vector<Automaton>& parts) {
+  if (parts.size() == 1) return {impl::compile(parts[0]), parts[0]};   // a plant of one component
+  std::vector<impl::Fsm> compiled;
+  std::vector<std::string> names;
+  for (std::size_t i = 0; i < parts.size(); ++i) {
+    compiled.push_back(impl::compile(parts[i]));
+    names.push_back("part " + std::to_string(i + 1));
   }
-  return paths;
+  std::vector<const impl::Fsm*> ptrs;
+  for (const auto& c : compiled) ptrs.push_back(&c);
+  return {impl::product(ptrs, names), model::product(parts, names)};
+}
+
+}  // namespace
+
+std::optional<std::string> diff_product(const std::vector<Automaton>& parts, BuiltSizes* sizes) {
+  const auto [ip, mp] = both_products(parts);
+  if (sizes) sizes->product_states = mp.states.size();
+  return diff_exact("product", ip, mp);
+}
+
+std::optional<std::string> diff_synthesis(const std::vector<Automaton>& plant_parts, const Automaton& spec,
+                                          BuiltSizes* sizes) {
+  const auto [ig, mg] = both_products(plant_parts);
+  const impl::Fsm s = impl::compile(spec);
+  const bool ic = impl::is_controllable(ig, s), mc = model::is_controllable(mg, spec);
+  if (ic != mc)
+    return std::string("controllability differs: impl ") + (ic ? "true" : "false") + ", model " + (mc ? "true" : "false");
+  const Automaton msup = model::supcon(mg, spec);
+  if (sizes) *sizes = BuiltSizes{mg.states.size(), msup.states.size()};
+  return diff_exact("supervisor", impl::supcon(ig, s), msup);
+}
+
+namespace {
+
+std::string words(const std::vector<std::string>& w) {
+  std::string out = "[";
+  for (const auto& e : w) out += (out.size() > 1 ? " " : "") + e;
+  return out + "]";
+}
+
+std::string shown(const swarmcheck::supervisor::Inclusion& i) {
+  return std::string("closed ") + (i.closed ? "yes" : "no") + " " + words(i.closed_witness) +
+         ", marked " + (i.marked ? "yes" : "no") + " " + words(i.marked_witness);
+}
+
+}  // namespace
+
+std::optional<std::string> diff_inclusion(const Automaton& a, const Automaton& b) {
+  const auto ii = impl::language_inclusion(impl::compile(a), impl::compile(b));
+  const auto mi = model::language_inclusion(a, b);
+  return differ("language inclusion", shown(ii), shown(mi));
 }
 
 }  // namespace swarmcheck::conformance::supervisor

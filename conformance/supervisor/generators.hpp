@@ -15,8 +15,8 @@
 
 namespace swarmcheck::conformance::supervisor {
 
-using spec::supervisor::Automaton;
-using spec::supervisor::EventAttr;
+using swarmcheck::supervisor::Automaton;
+using swarmcheck::supervisor::EventAttr;
 using Alphabet = std::map<std::string, EventAttr>;
 
 // prefix + i, appended rather than concatenated: GCC 12 warns falsely (-Wrestrict) on "q" + s.

@@ -13,7 +13,7 @@
 
 #include "impl/exploration/environment.hpp"
 
-namespace swarmcheck::impl {
+namespace swarmcheck::impl::exploration {
 namespace {
 
 struct UnionFind {
@@ -34,7 +34,7 @@ struct UnionFind {
 };
 
 // Groups of robots (each sorted by index) such that robots of different groups are > reach apart.
-std::vector<std::vector<int32_t>> independent_groups(const std::vector<exploration::CellIndex>& cells,
+std::vector<std::vector<int32_t>> independent_groups(const std::vector<swarmcheck::exploration::CellIndex>& cells,
                                                      int32_t reach) {
   const auto n = cells.size();
   const int64_t bucket = std::max<int64_t>(1, reach);
@@ -72,16 +72,21 @@ std::vector<std::vector<int32_t>> independent_groups(const std::vector<explorati
 
 }  // namespace
 
-void Environment::plan_grouped() {
-  const int32_t reach = sc_.params.s_range > sc_.map_size ? sc_.map_size : 2 * sc_.params.s_range;
-  const auto groups = independent_groups(cell_, reach);
+int64_t Environment::plan_grouped(swarmcheck::exploration::EnvironmentState& env, LazyGrid& grid) const {
+  const int32_t reach = cfg_.scenario.params.s_range > cfg_.scenario.map_size ? cfg_.scenario.map_size
+                                                                              : 2 * cfg_.scenario.params.s_range;
+  std::vector<CellIndex> cells(env.robots.size());
+  for (std::size_t r = 0; r < cells.size(); ++r) cells[r] = env.robots[r].cell;
+  const auto groups = independent_groups(cells, reach);
   std::vector<int64_t> newly(groups.size(), 0);
-  tbb::enumerable_thread_specific<WindowScratch> scratch;
+  tbb::enumerable_thread_specific<std::vector<Candidate>> scratch;
   tbb::parallel_for(std::size_t{0}, groups.size(), [&](std::size_t g) {
-    WindowScratch& w = scratch.local();
-    for (int32_t r : groups[g]) newly[g] += plan_robot(r, w);
+    std::vector<Candidate>& w = scratch.local();
+    for (int32_t r : groups[g]) newly[g] += swarmcheck::exploration::plan_robot(cfg_, env, grid, r, w);
   });
-  for (int64_t v : newly) visited_ += v;
+  int64_t total = 0;
+  for (int64_t v : newly) total += v;
+  return total;
 }
 
-}  // namespace swarmcheck::impl
+}  // namespace swarmcheck::impl::exploration

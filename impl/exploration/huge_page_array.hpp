@@ -8,7 +8,7 @@
 #include <new>
 #include <type_traits>
 
-namespace swarmcheck::impl {
+namespace swarmcheck::impl::exploration {
 
 template <class T>
 class HugePageArray {
@@ -56,4 +56,4 @@ class HugePageArray {
   std::size_t bytes_ = 0;
 };
 
-}  // namespace swarmcheck::impl
+}  // namespace swarmcheck::impl::exploration

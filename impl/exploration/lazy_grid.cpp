@@ -1,49 +1,37 @@
 #include "impl/exploration/lazy_grid.hpp"
 
-#include <algorithm>
+namespace swarmcheck::impl::exploration {
 
-#include "spec/exploration/trace.hpp"
+using swarmcheck::exploration::Evaporation;
 
-namespace swarmcheck::impl {
-
-namespace {
-double decay_per_step(const exploration::Params& p) {
-  if constexpr (kMutant == 4) return 1.0 - p.ertu * p.step_size;   // fault: no clamp at 0
-  return exploration::evaporation_factor(p);
-}
-}  // namespace
-
-LazyGrid::LazyGrid(const exploration::Scenario& s)
-    : n_(s.map_size),
-      dense_(s.rule == exploration::RuleSet::thesis),
-      ertu_dt_(s.params.ertu * s.params.step_size),
-      decay_(exploration::make_decay_table(std::clamp(decay_per_step(s.params), 0.0, 1.0))) {
-  if constexpr (kMutant == 4) {
-    // The unclamped factor may be negative: build the table by hand from it.
-    const double f = decay_per_step(s.params);
-    decay_.pow2[0] = f;
-    for (std::size_t i = 1; i < decay_.pow2.size(); ++i) decay_.pow2[i] = decay_.pow2[i - 1] * decay_.pow2[i - 1];
-  }
-  cells_ = HugePageArray<CellData>(static_cast<std::size_t>(n_) * static_cast<std::size_t>(n_), CellData{});
+LazyGrid::LazyGrid(const swarmcheck::exploration::EnvironmentConfig& cfg)
+    : n_(cfg.scenario.map_size),
+      dense_(cfg.rules->evaporation == Evaporation::literal_per_step),
+      ertu_dt_(cfg.ertu_dt),
+      decay_(&cfg.decay),
+      cells_(static_cast<std::size_t>(n_) * static_cast<std::size_t>(n_), CellData{}) {
   decay_cache_.resize(static_cast<std::size_t>(kDecayCacheSize));
   for (int64_t k = 0; k < kDecayCacheSize; ++k)
-    decay_cache_[static_cast<std::size_t>(k)] = exploration::decay_factor(decay_, k);
+    decay_cache_[static_cast<std::size_t>(k)] = swarmcheck::exploration::decay_factor(cfg.decay, k);
+}
+
+swarmcheck::exploration::Cell LazyGrid::cell(CellIndex c, int64_t tick) const {
+  const std::size_t k = index(c);
+  const int32_t occupant = static_cast<int32_t>(cells_[k].occupancy & kRobotMask) - 1;
+  return swarmcheck::exploration::Cell{current(k, tick), tick, (cells_[k].occupancy & kVisitedBit) != 0,
+                                       obstacle(k), occupant};
+}
+
+void LazyGrid::prefetch_window(CellIndex c, int32_t s_range) const {
+  const swarmcheck::exploration::Window w = swarmcheck::exploration::window_around(c, s_range, n_);
+  for (int32_t i = w.i_lo; i <= w.i_hi; ++i) {
+    __builtin_prefetch(&cells_[index(CellIndex{i, w.j_lo})]);
+    __builtin_prefetch(&cells_[index(CellIndex{i, w.j_hi})]);
+  }
 }
 
 void LazyGrid::evaporate_dense() {
-  for (CellData& c : cells_) {
-    double& v = c.value;
-    if constexpr (kMutant == 4)
-      v -= ertu_dt_ * v;
-    else
-      v = exploration::thesis_evaporate(v, ertu_dt_);
-  }
+  for (CellData& c : cells_) c.value = swarmcheck::exploration::thesis_evaporate(c.value, ertu_dt_);
 }
 
-uint64_t LazyGrid::digest(int64_t tick) const {
-  exploration::Fnv1a h;
-  for (std::size_t k = 0; k < cells_.size(); ++k) h.add(current(k, tick));
-  return h.h;
-}
-
-}  // namespace swarmcheck::impl
+}  // namespace swarmcheck::impl::exploration

@@ -1,9 +1,10 @@
 #pragma once
-// LazyGrid: the grid as structure-of-arrays with lazily evaluated evaporation.
+// LazyGrid: the grid of spec/exploration/environment_step.hpp with lazily evaluated evaporation.
 // A cell holds (value, tick written); its pheromone at tick t is value * F(t - written) with the
 // spec's decay function F (spec/exploration/decay.hpp), evaluated only when the cell is read or
-// written. The thesis rule set's literal update cannot be expressed through F, so it stays
-// dense: evaporate_dense() every step, and `value` is always current.
+// written, so a step costs the robots' windows, not the map. The thesis's literal update cannot
+// be expressed through F, so under it the grid is dense: every cell every step, and `value` is
+// always current.
 // A cell's fields sit together (one 16-byte record) so that a robot's window costs a few cache
 // lines even on maps far larger than the cache; F(k) for small ages comes from a table filled by
 // the spec's own decay_factor, so the bits are the same.
@@ -11,66 +12,50 @@
 #include <vector>
 
 #include "impl/exploration/huge_page_array.hpp"
-#include "impl/exploration/mutants.hpp"
-#include "spec/exploration/decay.hpp"
-#include "spec/exploration/types.hpp"
+#include "spec/exploration/environment_step.hpp"
+#include "spec/util/demand.hpp"
 
-namespace swarmcheck::impl {
+namespace swarmcheck::impl::exploration {
+
+using swarmcheck::exploration::Candidate;
+using swarmcheck::exploration::CellIndex;
 
 class LazyGrid {
  public:
-  LazyGrid(const exploration::Scenario& s);
+  explicit LazyGrid(const swarmcheck::exploration::EnvironmentConfig& cfg);
 
-  std::size_t index(int32_t i, int32_t j) const {
-    return static_cast<std::size_t>(i) * static_cast<std::size_t>(n_) + static_cast<std::size_t>(j);
+  // The grid operations of the spec's Environment step.
+  Candidate candidate(CellIndex c, int64_t tick) const {
+    const std::size_t k = index(c);
+    return Candidate{c, current(k, tick), blocked(k)};
   }
-  int32_t size() const { return n_; }
-
-  double current(std::size_t k, int64_t tick) const {
-    const CellData& c = cells_[k];
-    if (dense_ || c.value == 0.0) return c.value;   // +0 * F(k) = +0: F(k) >= 0 is finite
-    return c.value * decay(tick - c.written);
+  double pheromone(CellIndex c, int64_t tick) const { return current(index(c), tick); }
+  void release(CellIndex c) { set_occupant(index(c), -1); }
+  void occupy(CellIndex c, int32_t r) {
+    SWARM_ASSERT(!obstacle(index(c)));
+    set_occupant(index(c), r);
   }
-  // F(age), bit for bit the spec's: F multiplies P[i] over the set bits of age in increasing i,
-  // so the table's F(age mod 4096) is exactly the product so far, continued over the high bits.
-  double decay(int64_t age) const {
-    double acc = decay_cache_[static_cast<std::size_t>(age & (kDecayCacheSize - 1))];
-    auto bits = static_cast<uint64_t>(age) >> kDecayCacheBits;
-    for (std::size_t i = kDecayCacheBits; bits != 0; ++i, bits >>= 1)
-      if (bits & 1U) acc *= decay_.pow2[i];
-    return acc;
+  bool mark_visited(CellIndex c) {
+    CellData& cell = cells_[index(c)];
+    if (cell.occupancy & kVisitedBit) return false;
+    cell.occupancy |= kVisitedBit;
+    return true;
   }
-  void deposit(std::size_t k, int64_t tick, double amount) {
+  void set_obstacle(CellIndex c) { cells_[index(c)].occupancy |= kObstacleBit; }
+  // Lazy cells need nothing: every read names its tick. Literal cells are updated in place.
+  void evaporate(int64_t /*tick*/) {
+    if (dense_) evaporate_dense();
+  }
+  void deposit(CellIndex c, int64_t tick, double amount) {
+    const std::size_t k = index(c);
     cells_[k].value = current(k, tick) + amount;
     cells_[k].written = static_cast<int32_t>(tick);
   }
-  // thesis rule set: the literal per-step update on every cell.
-  void evaporate_dense();
-  bool dense() const { return dense_; }
 
-  bool visited(std::size_t k) const { return cells_[k].occupancy & kVisitedBit; }
-  bool obstacle(std::size_t k) const { return cells_[k].occupancy & kObstacleBit; }
-  // Marks a cell visited; true if it was not before.
-  bool mark_visited(std::size_t k) {
-    if (cells_[k].occupancy & kVisitedBit) return false;
-    cells_[k].occupancy |= kVisitedBit;
-    return true;
-  }
-  void set_obstacle(std::size_t k) { cells_[k].occupancy |= kObstacleBit; }
-  int32_t occupant(std::size_t k) const { return static_cast<int32_t>(cells_[k].occupancy & kRobotMask) - 1; }
-  void set_occupant(std::size_t k, int32_t r) {
-    cells_[k].occupancy = (cells_[k].occupancy & ~kRobotMask) | static_cast<uint32_t>(r + 1);
-  }
-  // An obstacle or a robot: any bit but `visited`.
-  bool blocked(std::size_t k) const { return (cells_[k].occupancy & ~kVisitedBit) != 0; }
+  swarmcheck::exploration::Cell cell(CellIndex c, int64_t tick) const;
 
-  // Asks the memory system for cells [k, k + count) ahead of use (no effect on results).
-  void prefetch(std::size_t k, std::size_t count) const {
-    __builtin_prefetch(&cells_[k]);
-    __builtin_prefetch(&cells_[k + count - 1]);
-  }
-
-  uint64_t digest(int64_t tick) const;   // FNV-1a over every current value, raster order
+  // Asks the memory system for the rows of c's window ahead of use (no effect on results).
+  void prefetch_window(CellIndex c, int32_t s_range) const;
 
  private:
   // 16 bytes: four cells to a cache line. Ticks fit 31 bits (kStepsMax); robot indices 30 bits
@@ -86,12 +71,38 @@ class LazyGrid {
   static constexpr int kDecayCacheBits = 12;
   static constexpr int64_t kDecayCacheSize = int64_t{1} << kDecayCacheBits;
 
+  std::size_t index(CellIndex c) const {
+    SWARM_ASSERT(swarmcheck::exploration::in_map(c, n_));
+    return static_cast<std::size_t>(c[0]) * static_cast<std::size_t>(n_) + static_cast<std::size_t>(c[1]);
+  }
+  double current(std::size_t k, int64_t tick) const {
+    const CellData& c = cells_[k];
+    if (dense_ || c.value == 0.0) return c.value;   // +0 * F(k) = +0: F(k) >= 0 is finite
+    return c.value * decay(tick - c.written);
+  }
+  // F(age), bit for bit the spec's: F multiplies P[i] over the set bits of age in increasing i,
+  // so the table's F(age mod 4096) is exactly the product so far, continued over the high bits.
+  double decay(int64_t age) const {
+    double acc = decay_cache_[static_cast<std::size_t>(age & (kDecayCacheSize - 1))];
+    auto bits = static_cast<uint64_t>(age) >> kDecayCacheBits;
+    for (std::size_t i = kDecayCacheBits; bits != 0; ++i, bits >>= 1)
+      if (bits & 1U) acc *= decay_->pow2[i];
+    return acc;
+  }
+  bool obstacle(std::size_t k) const { return cells_[k].occupancy & kObstacleBit; }
+  // An obstacle or a robot: any bit but `visited`.
+  bool blocked(std::size_t k) const { return (cells_[k].occupancy & ~kVisitedBit) != 0; }
+  void set_occupant(std::size_t k, int32_t r) {
+    cells_[k].occupancy = (cells_[k].occupancy & ~kRobotMask) | static_cast<uint32_t>(r + 1);
+  }
+  void evaporate_dense();
+
   int32_t n_;
   bool dense_;
   double ertu_dt_;
-  exploration::DecayTable decay_;
+  const swarmcheck::exploration::DecayTable* decay_;
   std::vector<double> decay_cache_;   // F(k) for k < kDecayCacheSize
   HugePageArray<CellData> cells_;
 };
 
-}  // namespace swarmcheck::impl
+}  // namespace swarmcheck::impl::exploration

@@ -1,29 +1,29 @@
 // Loading a mission file and the FSM it names.
-#include "impl/mission/load.hpp"
+#include "swarmcheck/mission.hpp"
 
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 
-#include "impl/supervisor/fsm_io.hpp"
+#include "swarmcheck/supervisor.hpp"
 #include "spec/util/input_error.hpp"
 
-namespace swarmcheck::impl::mission {
+namespace swarmcheck::mission {
 
-spec::mission::Mission load_mission(const std::string& path) {
+Mission load_mission(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path, "cannot open the mission file");
   std::ostringstream text;
   text << in.rdbuf();
-  const auto decl = spec::mission::parse_mission_text(text.str(), path);
+  const auto decl = parse_mission_text(text.str(), path);
   const std::filesystem::path fsm_path =
       std::filesystem::path(path).parent_path() / std::filesystem::path(decl.fsm);
   if (!std::filesystem::is_regular_file(fsm_path))
     throw InputError(path + ": fsm",
                      "cannot open the FSM file \"" + decl.fsm + "\" (looked for " +
                          fsm_path.string() + ")");
-  const auto fsm = supervisor::read_fsm_file(fsm_path.string());
-  return spec::mission::check_mission(decl, fsm, path);
+  const auto fsm = swarmcheck::supervisor::read_fsm_file(fsm_path.string());
+  return check_mission(decl, fsm, path);
 }
 
-}  // namespace swarmcheck::impl::mission
+}  // namespace swarmcheck::mission

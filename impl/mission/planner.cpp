@@ -3,10 +3,14 @@
 
 #include <algorithm>
 #include <cstring>
+#include <memory>
 #include <queue>
 #include <tuple>
 #include <unordered_map>
 
+#include "impl/supervisor/reach.hpp"
+#include "spec/mission/run.hpp"
+#include "swarmcheck/mission.hpp"
 #include "spec/util/input_error.hpp"
 
 namespace swarmcheck::impl::mission {
@@ -15,10 +19,9 @@ namespace {
 
 using supervisor::EventId;
 using supervisor::StateId;
-namespace sm = spec::mission;
+namespace sm = swarmcheck::mission;
 
 constexpr std::uint32_t kNoLabel = UINT32_MAX;
-constexpr std::size_t kCacheMax = 4096;
 
 template <class T>
 void append_bytes(std::string& out, const T& v) {
@@ -44,6 +47,63 @@ struct Key {  // (makespan, total, length, creation): smaller pops first
   }
 };
 
+// The labels of one search: per-robot positions and travel stored flat, the open queue, and the
+// labels settled at each node (state, positions), for the Pareto dominance test.
+struct Labels {
+  explicit Labels(std::size_t robots_count) : robots(robots_count) {}
+
+  const std::uint16_t* pos_of(std::uint32_t id) const { return &pos[std::size_t{id} * robots]; }
+  const double* travel_of(std::uint32_t id) const { return &travel[std::size_t{id} * robots]; }
+
+  std::string node_key(StateId s, const std::uint16_t* ps) const {
+    std::string k;
+    append_bytes(k, s);
+    k.append(reinterpret_cast<const char*>(ps), robots * sizeof(std::uint16_t));
+    return k;
+  }
+
+  // Some label settled at node k has travel <= v robot by robot.
+  bool dominated(const std::string& k, const double* v) const {
+    const auto it = settled.find(k);
+    if (it == settled.end()) return false;
+    for (const std::uint32_t w : it->second) {
+      const double* tw = travel_of(w);
+      bool all_le = true;
+      for (std::size_t r = 0; r < robots && all_le; ++r) all_le = tw[r] <= v[r];
+      if (all_le) return true;
+    }
+    return false;
+  }
+
+  void push(const Label& l, const std::uint16_t* ps, const double* tv) {
+    const auto id = static_cast<std::uint32_t>(all.size());
+    all.push_back(l);
+    pos.insert(pos.end(), ps, ps + robots);
+    travel.insert(travel.end(), tv, tv + robots);
+    open.push(Key{l.makespan, l.total, l.length, id});
+  }
+
+  std::size_t robots;
+  std::vector<Label> all;
+  std::vector<std::uint16_t> pos;  // [label * robots + r]
+  std::vector<double> travel;      // [label * robots + r]
+  std::priority_queue<Key, std::vector<Key>, std::greater<>> open;
+  std::unordered_map<std::string, std::vector<std::uint32_t>> settled;
+};
+
+// The plan that label `id` ends: its events read back along the parents, its travel's cost.
+Plan plan_of(const Labels& labels, std::uint32_t id, const supervisor::Fsm& fsm) {
+  Plan out;
+  out.found = true;
+  out.final_state = fsm.state_names[labels.all[id].state];
+  const double* tv = labels.travel_of(id);
+  out.cost = sm::cost_of(std::vector<double>(tv, tv + labels.robots));
+  for (std::uint32_t at = id; labels.all[at].parent != kNoLabel; at = labels.all[at].parent)
+    out.events.push_back(fsm.event_names[labels.all[at].event]);
+  std::reverse(out.events.begin(), out.events.end());
+  return out;
+}
+
 }  // namespace
 
 Planner::Planner(const sm::Mission& m) : mission_(&m), fsm_(supervisor::compile(m.fsm)) {
@@ -52,24 +112,8 @@ Planner::Planner(const sm::Mission& m) : mission_(&m), fsm_(supervisor::compile(
   marked_.assign(n, 0);
   for (const auto& q : m.marked_states)
     if (auto it = state_id_.find(q); it != state_id_.end()) marked_[it->second] = 1;
-  // Reverse reachability to the marked states.
-  std::vector<std::vector<StateId>> preds(n);
-  for (StateId s = 0; s < n; ++s)
-    for (auto k = fsm_.first_edge[s]; k < fsm_.first_edge[s + 1]; ++k)
-      preds[fsm_.edge_target[k]].push_back(s);
-  coaccessible_ = marked_;
-  std::vector<StateId> stack;
-  for (StateId s = 0; s < n; ++s)
-    if (marked_[s]) stack.push_back(s);
-  while (!stack.empty()) {
-    const StateId s = stack.back();
-    stack.pop_back();
-    for (const StateId p : preds[s])
-      if (!coaccessible_[p]) {
-        coaccessible_[p] = 1;
-        stack.push_back(p);
-      }
-  }
+  // Only states that can still reach a marked state are ever entered.
+  coaccessible_ = supervisor::coreachable(supervisor::reverse_edges(fsm_), marked_);
   event_robot_.assign(fsm_.event_count(), -1);
   event_task_.assign(fsm_.event_count(), -1);
   for (EventId e = 0; e < fsm_.event_count(); ++e) {
@@ -104,7 +148,7 @@ Plan Planner::plan(const PlanQuery& q) {
     return it->second;
   }
   Plan p = search(q);
-  if (cache_.size() >= kCacheMax) cache_.clear();
+  if (cache_.size() >= sm::kPlanMemory) cache_.clear();  // the spec's memory of queries
   cache_.emplace(std::move(key), p);
   return p;
 }
@@ -120,86 +164,69 @@ Plan Planner::search(const PlanQuery& q) {
     for (std::size_t t = 0; t < tasks; ++t)
       from_here[r * tasks + t] = sm::distance(q.positions[r], m.tasks[t].at);
 
-  std::vector<Label> labels;
-  std::vector<std::uint16_t> pos;  // [label * robots + r]
-  std::vector<double> travel;      // [label * robots + r]
-  std::priority_queue<Key, std::vector<Key>, std::greater<>> open;
-  std::unordered_map<std::string, std::vector<std::uint32_t>> settled;
-
-  auto node_key = [&](StateId s, const std::uint16_t* ps) {
-    std::string k;
-    append_bytes(k, s);
-    k.append(reinterpret_cast<const char*>(ps), robots * sizeof(std::uint16_t));
-    return k;
-  };
-  auto dominated = [&](const std::string& k, const double* v) {
-    const auto it = settled.find(k);
-    if (it == settled.end()) return false;
-    for (const std::uint32_t w : it->second) {
-      const double* tw = &travel[std::size_t{w} * robots];
-      bool all_le = true;
-      for (std::size_t r = 0; r < robots && all_le; ++r) all_le = tw[r] <= v[r];
-      if (all_le) return true;
-    }
-    return false;
-  };
-  auto push = [&](Label l, const std::uint16_t* ps, const double* tv) {
-    const auto id = static_cast<std::uint32_t>(labels.size());
-    labels.push_back(l);
-    pos.insert(pos.end(), ps, ps + robots);
-    travel.insert(travel.end(), tv, tv + robots);
-    open.push(Key{l.makespan, l.total, l.length, id});
-  };
-
+  Labels labels(robots);
   const StateId start = state_id_.at(q.from);
-  Plan out;
   if (coaccessible_[start]) {
     const sm::PlanCost c0 = sm::cost_of(q.travel);
-    std::vector<std::uint16_t> p0(robots, here);
-    push(Label{start, kNoLabel, 0, 0, c0.makespan, c0.total}, p0.data(), q.travel.data());
+    const std::vector<std::uint16_t> p0(robots, here);
+    labels.push(Label{start, kNoLabel, 0, 0, c0.makespan, c0.total}, p0.data(), q.travel.data());
   }
+  Plan out;
   std::vector<std::uint16_t> ps(robots);
   std::vector<double> tv(robots);
-  while (!open.empty()) {
-    const std::uint32_t id = open.top().id;
-    open.pop();
-    const Label l = labels[id];
-    const std::string k = node_key(l.state, &pos[std::size_t{id} * robots]);
-    if (dominated(k, &travel[std::size_t{id} * robots])) continue;
-    settled[k].push_back(id);
+  while (!labels.open.empty()) {
+    const std::uint32_t id = labels.open.top().id;
+    labels.open.pop();
+    const Label l = labels.all[id];
+    const std::string k = labels.node_key(l.state, labels.pos_of(id));
+    if (labels.dominated(k, labels.travel_of(id))) continue;
+    labels.settled[k].push_back(id);
     if (marked_[l.state]) {
-      out.found = true;
-      out.final_state = fsm_.state_names[l.state];
-      out.cost = sm::cost_of(std::vector<double>(travel.begin() + std::ptrdiff_t(id * robots),
-                                                 travel.begin() + std::ptrdiff_t((id + 1) * robots)));
-      for (std::uint32_t at = id; labels[at].parent != kNoLabel; at = labels[at].parent)
-        out.events.push_back(fsm_.event_names[labels[at].event]);
-      std::reverse(out.events.begin(), out.events.end());
+      out = plan_of(labels, id, fsm_);
       break;
     }
     for (auto e = fsm_.first_edge[l.state]; e < fsm_.first_edge[l.state + 1]; ++e) {
       const StateId target = fsm_.edge_target[e];
       if (!coaccessible_[target]) continue;
       const EventId ev = fsm_.edge_event[e];
-      std::copy_n(&pos[std::size_t{id} * robots], robots, ps.begin());
-      std::copy_n(&travel[std::size_t{id} * robots], robots, tv.begin());
-      if (event_robot_[ev] >= 0) {
+      std::copy_n(labels.pos_of(id), robots, ps.begin());
+      std::copy_n(labels.travel_of(id), robots, tv.begin());
+      if (event_robot_[ev] >= 0) {  // a task start: that robot travels to the task
         const auto r = static_cast<std::size_t>(event_robot_[ev]);
         const auto t = static_cast<std::uint16_t>(event_task_[ev]);
         tv[r] += ps[r] == here ? from_here[r * tasks + t] : task_distance_[ps[r] * tasks + t];
         ps[r] = t;
       }
-      double makespan = 0.0, total = 0.0;
+      double makespan = 0.0, total = 0.0;  // as spec cost_of does, without its copy
       for (const double x : tv) {
         makespan = std::max(makespan, x);
         total += x;
       }
-      if (dominated(node_key(target, ps.data()), tv.data())) continue;
-      push(Label{target, id, ev, l.length + 1, makespan, total}, ps.data(), tv.data());
+      if (labels.dominated(labels.node_key(target, ps.data()), tv.data())) continue;
+      labels.push(Label{target, id, ev, l.length + 1, makespan, total}, ps.data(), tv.data());
     }
   }
-  labels_last_ = labels.size();
+  labels_last_ = labels.all.size();
   return out;
 }
 
 }  // namespace swarmcheck::impl::mission
+
+namespace swarmcheck::mission {
+
+// The public planner owns its copy of the mission, which the internal one points into.
+struct Planner::State {
+  explicit State(const Mission& mission) : m(mission), planner(m) {}
+  Mission m;
+  impl::mission::Planner planner;
+};
+
+Planner::Planner(const Mission& m) : state_(std::make_unique<State>(m)) {}
+Planner::~Planner() = default;
+Planner::Planner(Planner&&) noexcept = default;
+Planner& Planner::operator=(Planner&&) noexcept = default;
+Plan Planner::plan(const PlanQuery& q) { return state_->planner.plan(q); }
+std::size_t Planner::cache_hits() const { return state_->planner.cache_hits(); }
+std::size_t Planner::labels_last() const { return state_->planner.labels_last(); }
+
+}  // namespace swarmcheck::mission

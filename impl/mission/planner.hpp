@@ -14,7 +14,8 @@
 // Caching (the thesis's future work): the compiled FSM, the reverse reachability to the marked
 // states, the event meanings and the task-to-task distances are computed once per Planner; a
 // plan is remembered per exact query (state, positions and travel, by bits), so re-planning at a
-// choice whose inputs did not change is a lookup.
+// choice whose inputs did not change is a lookup (up to the spec's kPlanMemory queries, forgotten
+// all at once when full: spec/mission/run.hpp). The public swarmcheck::mission::Planner wraps this class.
 #include <cstdint>
 #include <map>
 #include <string>
@@ -25,12 +26,12 @@
 
 namespace swarmcheck::impl::mission {
 
-using spec::mission::Plan;
-using spec::mission::PlanQuery;
+using swarmcheck::mission::Plan;
+using swarmcheck::mission::PlanQuery;
 
 class Planner {
  public:
-  explicit Planner(const spec::mission::Mission& m);
+  explicit Planner(const swarmcheck::mission::Mission& m);
 
   // Throws InputError when q.from is not a state of the FSM or the vectors have the wrong size.
   Plan plan(const PlanQuery& q);
@@ -41,7 +42,7 @@ class Planner {
  private:
   Plan search(const PlanQuery& q);
 
-  const spec::mission::Mission* mission_;
+  const swarmcheck::mission::Mission* mission_;
   supervisor::Fsm fsm_;
   std::map<std::string, supervisor::StateId> state_id_;
   std::vector<std::uint8_t> marked_;

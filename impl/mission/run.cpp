@@ -1,24 +1,33 @@
-// Execution of a mission in simulation: choice by the exact planner, motion, region entries.
-#include "impl/mission/run.hpp"
+// Execution of a mission in simulation (spec/mission/run.hpp): choice by the exact planner,
+// motion, region entries. The public run_mission is defined here.
 
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <deque>
 #include <optional>
+#include <stdexcept>
 
 #include "impl/mission/planner.hpp"
 #include "spec/exploration/body.hpp"
 #include "spec/exploration/controller.hpp"
 #include "spec/mission/avoidance.hpp"
 #include "spec/mission/plan.hpp"
+#include "spec/mission/run.hpp"
+#include "swarmcheck/mission.hpp"
 
 namespace swarmcheck::impl::mission {
 
 namespace {
 
-namespace sm = spec::mission;
+namespace sm = swarmcheck::mission;
 namespace ex = swarmcheck::exploration;
+using sm::BodyModel;
+using sm::EventRecord;
+using sm::RunObserver;
+using sm::RunOptions;
+using sm::RunResult;
+using sm::StepRecord;
 
 struct RobotSim {
   sm::Point pos;
@@ -129,7 +138,7 @@ class Runner {
   }
 
   bool has_controllable() const {
-    for (const auto& e : spec::supervisor::enabled(m_.fsm, state_))
+    for (const auto& e : swarmcheck::supervisor::enabled(m_.fsm, state_))
       if (m_.fsm.events.at(e).controllable) return true;
     return false;
   }
@@ -214,11 +223,11 @@ class Runner {
       if (robots_[i].blocked) {
         const Proposal p = propose(o_, rp_, robots_[i]);
         for (const auto& e : sm::entry_events(m_, i, robots_[i].pos, p.pos))
-          if (!spec::supervisor::successor(m_.fsm, state_, e))
+          if (!swarmcheck::supervisor::successor(m_.fsm, state_, e))
             why.push_back(fmt::format("robot {} waits to fire {}", m_.robots[i].name, e));
       }
     std::string enabled;
-    for (const auto& e : spec::supervisor::enabled(m_.fsm, state_))
+    for (const auto& e : swarmcheck::supervisor::enabled(m_.fsm, state_))
       enabled += (enabled.empty() ? "" : ", ") + e;
     std::string out = fmt::format("deadlock in state {}: no robot can move (enabled events: {})",
                                   state_, enabled.empty() ? "none" : enabled);
@@ -227,7 +236,10 @@ class Runner {
   }
 
   void fire(const std::string& e, double t) {
-    state_ = *spec::supervisor::successor(m_.fsm, state_, e);
+    const auto next = swarmcheck::supervisor::successor(m_.fsm, state_, e);
+    // Only enabled events fire: a planned one that is not is a bug of the planner (exit 3).
+    if (!next) throw std::logic_error("planned event " + e + " is not enabled in state " + state_);
+    state_ = *next;
     const sm::Meaning& mn = m_.events.at(e);
     EventRecord rec{t, e, m_.robots[mn.robot].name, m_.fsm.events.at(e).controllable, state_};
     if (obs_) obs_->on_event(rec);
@@ -256,8 +268,12 @@ class Runner {
 
 }  // namespace
 
-RunResult run_mission(const sm::Mission& m, const RunOptions& o, RunObserver* observer) {
-  return Runner(m, o, observer).run();
+}  // namespace swarmcheck::impl::mission
+
+namespace swarmcheck::mission {
+
+RunResult run_mission(const Mission& m, const RunOptions& o, RunObserver* observer) {
+  return impl::mission::Runner(m, o, observer).run();
 }
 
-}  // namespace swarmcheck::impl::mission
+}  // namespace swarmcheck::mission

@@ -2,10 +2,14 @@
 #include "impl/mission/trace.hpp"
 
 #include <istream>
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <ostream>
 
+#include "impl/io/atomic_file.hpp"
+#include "spec/util/hana_json.hpp"
 #include "spec/util/input_error.hpp"
+#include "swarmcheck/mission.hpp"
 
 namespace swarmcheck::impl::mission {
 
@@ -13,7 +17,7 @@ namespace {
 using Json = nlohmann::ordered_json;
 }
 
-TraceWriter::TraceWriter(std::ostream& out, const spec::mission::Mission& m, const RunOptions& o)
+TraceWriter::TraceWriter(std::ostream& out, const swarmcheck::mission::Mission& m, const RunOptions& o)
     : out_(out) {
   Json names = Json::array();
   for (const auto& r : m.robots) names.push_back(r.name);
@@ -24,7 +28,7 @@ TraceWriter::TraceWriter(std::ostream& out, const spec::mission::Mission& m, con
                   {"fsm", m.fsm_name},
                   {"initial_state", m.initial_state},
                   {"robots", names},
-                  {"body", o.body == BodyModel::kinematic ? "kinematic" : "unicycle"},
+                  {"body", json_io::enum_to_string(o.body)},
                   {"dt", o.dt_s}};
   out_ << h.dump() << '\n';
 }
@@ -86,3 +90,22 @@ MissionTrace read_trace(std::istream& in, const std::string& source) {
 }
 
 }  // namespace swarmcheck::impl::mission
+
+namespace swarmcheck::mission {
+
+// The writer is built on the temporary file's stream, so the file is declared first.
+struct TraceFile::State {
+  State(const std::string& path, const Mission& m, const RunOptions& o)
+      : file(path), writer(file.stream(), m, o) {}
+  impl::io::AtomicFile file;
+  impl::mission::TraceWriter writer;
+};
+
+TraceFile::TraceFile(const std::string& path, const Mission& m, const RunOptions& o)
+    : state_(std::make_unique<State>(path, m, o)) {}
+TraceFile::~TraceFile() = default;
+void TraceFile::on_event(const EventRecord& e) { state_->writer.on_event(e); }
+void TraceFile::on_step(const StepRecord& s) { state_->writer.on_step(s); }
+void TraceFile::commit() { state_->file.commit(); }
+
+}  // namespace swarmcheck::mission

@@ -5,18 +5,24 @@
 //    "initial_state":..,"robots":[names],"body":"unicycle"|"kinematic","dt":..}
 //   {"type":"event","t":..,"event":"a3s","robot":"A","kind":"c"|"uc","state":<state after>}
 //   {"type":"step","t":..,"state":..,"positions":[[x,y],..],"blocked":[false,..]}
-// Doubles are written so that they read back to the same bits.
+// Doubles are written so that they read back to the same bits. The public TraceFile
+// (swarmcheck/mission.hpp) is a TraceWriter on an io::AtomicFile.
 #include <iosfwd>
 #include <string>
 #include <vector>
 
-#include "impl/mission/run.hpp"
+#include "spec/mission/run.hpp"
 
 namespace swarmcheck::impl::mission {
 
+using swarmcheck::mission::EventRecord;
+using swarmcheck::mission::RunObserver;
+using swarmcheck::mission::RunOptions;
+using swarmcheck::mission::StepRecord;
+
 class TraceWriter : public RunObserver {
  public:
-  TraceWriter(std::ostream& out, const spec::mission::Mission& m, const RunOptions& o);
+  TraceWriter(std::ostream& out, const swarmcheck::mission::Mission& m, const RunOptions& o);
   void on_event(const EventRecord& e) override;
   void on_step(const StepRecord& s) override;
 

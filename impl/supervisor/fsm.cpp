@@ -36,7 +36,7 @@ void set_edges(Fsm& f, const std::vector<std::vector<std::pair<EventId, StateId>
   }
 }
 
-Fsm compile(const spec::supervisor::Automaton& a) {
+Fsm compile(const swarmcheck::supervisor::Automaton& a) {
   Fsm f;
   for (const auto& [e, attr] : a.events) {  // std::map: already in name order
     f.event_names.push_back(e);
@@ -57,8 +57,8 @@ Fsm compile(const spec::supervisor::Automaton& a) {
   return f;
 }
 
-spec::supervisor::Automaton decompile(const Fsm& f) {
-  spec::supervisor::Automaton a;
+swarmcheck::supervisor::Automaton decompile(const Fsm& f) {
+  swarmcheck::supervisor::Automaton a;
   a.states = f.state_names;
   for (EventId e = 0; e < f.event_count(); ++e)
     a.events[f.event_names[e]] = {f.controllable[e] != 0, f.observable[e] != 0};

@@ -34,8 +34,8 @@ struct Fsm {
   EventId event_id(const std::string& name) const;
 };
 
-Fsm compile(const spec::supervisor::Automaton& a);
-spec::supervisor::Automaton decompile(const Fsm& f);
+Fsm compile(const swarmcheck::supervisor::Automaton& a);
+swarmcheck::supervisor::Automaton decompile(const Fsm& f);
 
 // Builds the CSR arrays from per-state edge lists (each sorted by event). Used by operations.
 void set_edges(Fsm& f, const std::vector<std::vector<std::pair<EventId, StateId>>>& edges);

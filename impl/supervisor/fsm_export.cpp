@@ -2,7 +2,7 @@
 
 #include <nlohmann/json.hpp>
 
-namespace swarmcheck::impl::supervisor {
+namespace swarmcheck::supervisor {
 
 namespace {
 
@@ -18,7 +18,7 @@ std::string quoted(const std::string& s) {
 
 }  // namespace
 
-std::string to_dot(const spec::supervisor::Automaton& a) {
+std::string to_dot(const Automaton& a) {
   std::string out = "digraph fsm {\n  rankdir=LR;\n  node [shape=circle];\n";
   if (!a.states.empty())
     out += "  __start [shape=point];\n  __start -> " + quoted(a.states.front()) + ";\n";
@@ -36,7 +36,7 @@ std::string to_dot(const spec::supervisor::Automaton& a) {
   return out + "}\n";
 }
 
-std::string to_json_text(const spec::supervisor::Automaton& a) {
+std::string to_json_text(const Automaton& a) {
   using Json = nlohmann::ordered_json;
   Json j = Json::object();
   j["initial"] = a.states.empty() ? Json(nullptr) : Json(a.states.front());
@@ -59,4 +59,4 @@ std::string to_json_text(const spec::supervisor::Automaton& a) {
   return j.dump(2) + "\n";
 }
 
-}  // namespace swarmcheck::impl::supervisor
+}  // namespace swarmcheck::supervisor

@@ -1,16 +1,12 @@
 #pragma once
-// Export of an automaton to Graphviz DOT and to JSON (the `.fsm` form is in fsm_io.hpp).
-#include <string>
-
-#include "spec/supervisor/automaton.hpp"
+// Export of an automaton to Graphviz DOT and to JSON (the `.fsm` form is in fsm_io.hpp): the
+// public API's functions (swarmcheck/supervisor.hpp, defined in fsm_export.cpp), under the
+// library's internal names too.
+#include "swarmcheck/supervisor.hpp"
 
 namespace swarmcheck::impl::supervisor {
 
-// digraph: marked states doubled, the initial state pointed at, uncontrollable events dashed.
-std::string to_dot(const spec::supervisor::Automaton& a);
-
-// {"initial", "states": [{"name", "marked", "transitions": [{"event", "target"}]}],
-//  "events": [{"name", "controllable", "observable"}]}, indented, states in order.
-std::string to_json_text(const spec::supervisor::Automaton& a);
+using swarmcheck::supervisor::to_dot;
+using swarmcheck::supervisor::to_json_text;
 
 }  // namespace swarmcheck::impl::supervisor

@@ -20,24 +20,19 @@
 #include <string_view>
 
 #include "spec/supervisor/automaton.hpp"
+#include "swarmcheck/supervisor.hpp"
 
 namespace swarmcheck::impl::supervisor {
 
-using spec::supervisor::Automaton;
+using swarmcheck::supervisor::Automaton;
+// The reader and writer are the public API's (swarmcheck/supervisor.hpp), defined in
+// fsm_read.cpp and fsm_write.cpp; internal callers use them under these names too.
+using swarmcheck::supervisor::read_fsm;
+using swarmcheck::supervisor::read_fsm_file;
+using swarmcheck::supervisor::write_fsm;
 
 // No allocation is sized from a count in the file, but counts above these are refused anyway.
 inline constexpr std::size_t kStatesMax = 100'000'000;
 inline constexpr std::size_t kTransitionsPerStateMax = 1'000'000;
-
-// `source` names the text in error messages (usually the path).
-Automaton read_fsm(std::string_view text, const std::string& source);
-// Reads the file at `path`; a file that cannot be opened is an InputError too.
-Automaton read_fsm_file(const std::string& path);
-
-std::string write_fsm(const Automaton& a);
-
-// Writes `content` to `path` through a temporary file in the same folder and a rename, so the
-// path holds either its old content or the whole new one. Failure is an InputError.
-void write_file_atomically(const std::string& path, const std::string& content);
 
 }  // namespace swarmcheck::impl::supervisor

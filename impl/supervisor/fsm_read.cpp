@@ -14,7 +14,7 @@ namespace swarmcheck::impl::supervisor {
 
 namespace {
 
-using spec::supervisor::EventAttr;
+using swarmcheck::supervisor::EventAttr;
 
 struct Token {
   std::string text;
@@ -288,8 +288,12 @@ class Reader {
 
 }  // namespace
 
+}  // namespace swarmcheck::impl::supervisor
+
+namespace swarmcheck::supervisor {
+
 Automaton read_fsm(std::string_view text, const std::string& source) {
-  return Reader(text, source).read();
+  return impl::supervisor::Reader(text, source).read();
 }
 
 Automaton read_fsm_file(const std::string& path) {
@@ -301,4 +305,4 @@ Automaton read_fsm_file(const std::string& path) {
   return read_fsm(buffer.str(), path);
 }
 
-}  // namespace swarmcheck::impl::supervisor
+}  // namespace swarmcheck::supervisor

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "impl/supervisor/fsm.hpp"
+#include "spec/supervisor/semantics.hpp"
 
 namespace swarmcheck::impl::supervisor {
 
@@ -27,5 +28,10 @@ Fsm product(const std::vector<const Fsm*>& parts, const std::vector<std::string>
 bool is_controllable(const Fsm& plant, const Fsm& spec);
 // The supremal controllable nonblocking supervisor of plant for spec.
 Fsm supcon(const Fsm& plant, const Fsm& spec);
+
+// L(a) in L(b) and Lm(a) in Lm(b), with the spec's shortlex-least witnesses: breadth-first over
+// the accessible pairs (state of a, state of b or none), each pair stored once with its parent
+// and event, so memory is O(pairs) and a witness is read back along the parents.
+swarmcheck::supervisor::Inclusion language_inclusion(const Fsm& a, const Fsm& b);
 
 }  // namespace swarmcheck::impl::supervisor

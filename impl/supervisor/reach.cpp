@@ -1,5 +1,7 @@
 // Accessibility and coaccessibility: one worklist pass each (forward over the CSR edges,
 // backward over a reverse CSR built once).
+#include "impl/supervisor/reach.hpp"
+
 #include "impl/supervisor/operations.hpp"
 #include "spec/util/demand.hpp"
 
@@ -24,34 +26,54 @@ std::vector<std::uint8_t> accessible_mask(const Fsm& f) {
   return seen;
 }
 
-std::vector<std::uint8_t> coaccessible_mask(const Fsm& f) {
+ReverseEdges reverse_edges(const Fsm& f, const std::vector<std::uint8_t>* events) {
+  SWARM_DEMAND(!events || events->size() == f.event_count());
   const StateId n = f.state_count();
-  // Reverse adjacency as CSR: count in-degrees, prefix-sum, fill.
-  std::vector<std::uint32_t> first(n + 1, 0);
-  for (const StateId t : f.edge_target) ++first[t + 1];
-  for (StateId s = 0; s < n; ++s) first[s + 1] += first[s];
-  std::vector<StateId> source(f.edge_count());
-  std::vector<std::uint32_t> fill(first.begin(), first.end() - 1);
+  auto take = [&](std::uint32_t i) { return !events || (*events)[f.edge_event[i]]; };
+  // Count the kept in-degrees, prefix-sum them into offsets, then fill in source order.
+  ReverseEdges r;
+  r.first.assign(n + 1, 0);
   for (StateId s = 0; s < n; ++s)
     for (auto i = f.first_edge[s]; i < f.first_edge[s + 1]; ++i)
-      source[fill[f.edge_target[i]]++] = s;
+      if (take(i)) ++r.first[f.edge_target[i] + 1];
+  for (StateId s = 0; s < n; ++s) r.first[s + 1] += r.first[s];
+  r.source.resize(r.first[n]);
+  std::vector<std::uint32_t> fill(r.first.begin(), r.first.end() - 1);
+  for (StateId s = 0; s < n; ++s)
+    for (auto i = f.first_edge[s]; i < f.first_edge[s + 1]; ++i)
+      if (take(i)) r.source[fill[f.edge_target[i]]++] = s;
+  return r;
+}
+
+std::vector<std::uint8_t> coreachable(const ReverseEdges& r, const std::vector<std::uint8_t>& seeds,
+                                      const std::vector<std::uint8_t>* within) {
+  const std::size_t n = seeds.size();
+  SWARM_DEMAND(r.first.size() == n + 1);
+  SWARM_DEMAND(!within || within->size() == n);
+  auto inside = [&](StateId s) { return !within || (*within)[s]; };
   std::vector<std::uint8_t> seen(n, 0);
   std::vector<StateId> stack;
   for (StateId s = 0; s < n; ++s)
-    if (f.marked[s]) {
+    if (seeds[s] && inside(s)) {
       seen[s] = 1;
       stack.push_back(s);
     }
   while (!stack.empty()) {
     const StateId t = stack.back();
     stack.pop_back();
-    for (auto i = first[t]; i < first[t + 1]; ++i)
-      if (!seen[source[i]]) {
-        seen[source[i]] = 1;
-        stack.push_back(source[i]);
+    for (auto i = r.first[t]; i < r.first[t + 1]; ++i) {
+      const StateId s = r.source[i];
+      if (!seen[s] && inside(s)) {
+        seen[s] = 1;
+        stack.push_back(s);
       }
+    }
   }
   return seen;
+}
+
+std::vector<std::uint8_t> coaccessible_mask(const Fsm& f) {
+  return coreachable(reverse_edges(f), f.marked);
 }
 
 Fsm accessible_part(const Fsm& f) { return restrict_states(f, accessible_mask(f)); }

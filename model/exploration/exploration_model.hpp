@@ -1,41 +1,55 @@
 #pragma once
-// The reference model of system A: one Environment, one Controller and one Body per robot,
-// stepped by a Jacobi fixed-step master (as INTO-CPS Maestro).
-//
-// Master step, x- the state before and x+ after (no component has direct feedthrough):
-//   exchange:   env.all_arrived      := AND_i ctrl_i-.onDestinationOutput
-//               ctrl_i.pose          := body_i-
-//               ctrl_i.waypoint, .onDestinationInput := env-.waypoint_i, env-.onDestinationOutput
-//               body_i.servos        := ctrl_i-.servo_left, ctrl_i-.servo_right
-//   step:       env+ = env(env-, inputs); ctrl_i+ = ctrl(ctrl_i-, inputs); body_i+ = body(...)
-//   advance:    steps := steps + 1
-// abstract mode has no controllers or bodies: every step plans and each robot stands on its
-// waypoint at once (the thesis's preliminary version).
+// The reference model of system A: the spec's Environment step on a dense grid, one Controller
+// and one Body per robot, stepped by the spec's Jacobi master (spec/exploration/master.hpp).
+// Every stage is the obvious loop: robots one after another, every cell every step.
+#include <optional>
 #include <vector>
 
-#include "model/exploration/environment_model.hpp"
+#include "model/exploration/dense_grid.hpp"
+#include "spec/exploration/environment_step.hpp"
 #include "spec/exploration/types.hpp"
 
-namespace swarmcheck::exploration::model {
+namespace swarmcheck::model::exploration {
+
+using namespace swarmcheck::exploration;
 
 class ExplorationModel {
  public:
-  explicit ExplorationModel(const Scenario& s, RobotParams rp = RobotParams{});
+  explicit ExplorationModel(const Scenario& s, RobotParams rp = RobotParams{});   // s must be valid
+  ExplorationModel(const ExplorationModel&) = delete;   // the grid points at cfg_
+  ExplorationModel& operator=(const ExplorationModel&) = delete;
 
   void step();
   // Completed, or max_steps steps done.
   bool done() const;
-  int64_t steps() const { return env_.tick(); }
+
+  int64_t steps() const { return env_.tick; }
+  int64_t planning_steps() const { return env_.planning_steps; }
+  int64_t visited() const { return env_.progress.visited; }
+  int64_t free_cells() const { return env_.progress.free_cells; }
+  double eP() const { return env_.progress.eP; }
+  double sTime() const { return env_.progress.sTime; }
+  std::optional<int64_t> completion_step() const { return env_.progress.completion_step; }
   StepRecord record() const;
-  const EnvironmentModel& environment() const { return env_; }
-  const Scenario& scenario() const { return sc_; }
+  // One cell, with its pheromone current at steps().
+  Cell cell(CellIndex c) const { return grid_.cell(c); }
+  int64_t pheromone_written(CellIndex c) const { return grid_.written_tick(c); }
+  const Scenario& scenario() const { return cfg_.scenario; }
+
+  // The master's stages (spec/exploration/master.hpp).
+  std::span<const ControllerState> controllers() const { return ctrl_; }
+  int32_t environment_output() const { return env_.handshake.on_destination_output; }
+  void robots_step(int32_t env_output);
+  void environment_step(bool all_arrived);
+  void place_bodies_on_waypoints();
 
  private:
-  Scenario sc_;
+  EnvironmentConfig cfg_;
   RobotParams rp_;
-  EnvironmentModel env_;
+  DenseGrid grid_;
+  EnvironmentState env_;
   std::vector<ControllerState> ctrl_;
   std::vector<BodyState> body_;
 };
 
-}  // namespace swarmcheck::exploration::model
+}  // namespace swarmcheck::model::exploration

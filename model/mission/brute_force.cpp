@@ -9,7 +9,7 @@ namespace swarmcheck::model::mission {
 
 namespace {
 
-namespace sm = spec::mission;
+namespace sm = swarmcheck::mission;
 
 struct Search {
   const sm::Mission& m;

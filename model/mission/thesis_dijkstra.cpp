@@ -10,7 +10,7 @@ namespace swarmcheck::model::mission {
 
 namespace {
 
-namespace sm = spec::mission;
+namespace sm = swarmcheck::mission;
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 struct EventInfo {

@@ -29,6 +29,6 @@
 
 namespace swarmcheck::model::mission {
 
-spec::mission::Plan thesis_plan(const spec::mission::Mission& m, const spec::mission::PlanQuery& q);
+swarmcheck::mission::Plan thesis_plan(const swarmcheck::mission::Mission& m, const swarmcheck::mission::PlanQuery& q);
 
 }  // namespace swarmcheck::model::mission

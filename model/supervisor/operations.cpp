@@ -8,6 +8,9 @@
 
 namespace swarmcheck::model::supervisor {
 
+// The spec's one-step rules (post, pre, sync_successor, ...) by their short names.
+using namespace swarmcheck::supervisor;
+
 namespace {
 
 // Least fixpoint of X -> X u step(X) from `seed`: repeated whole-set passes.

@@ -7,10 +7,16 @@
 #include <vector>
 
 #include "spec/supervisor/automaton.hpp"
+#include "spec/supervisor/semantics.hpp"
 
 namespace swarmcheck::model::supervisor {
 
-using namespace swarmcheck::spec::supervisor;
+// The spec's value types, by their short names (the operations below are the model's own).
+using swarmcheck::supervisor::Automaton;
+using swarmcheck::supervisor::Event;
+using swarmcheck::supervisor::Inclusion;
+using swarmcheck::supervisor::State;
+using swarmcheck::supervisor::StateSet;
 
 StateSet accessible_states(const Automaton& a);
 StateSet coaccessible_states(const Automaton& a);
@@ -37,13 +43,8 @@ bool is_controllable(const Automaton& plant, const Automaton& spec);
 // The supremal controllable nonblocking supervisor of plant G for specification S.
 Automaton supcon(const Automaton& plant, const Automaton& spec);
 
-// L(A) in L(B) and Lm(A) in Lm(B), each with a shortest counterexample word when false.
-struct Inclusion {
-  bool closed = true;
-  bool marked = true;
-  std::vector<Event> closed_witness;
-  std::vector<Event> marked_witness;
-};
+// L(A) in L(B) and Lm(A) in Lm(B), with the spec's witnesses (the shortlex-least words of the
+// differences), by breadth-first search keeping each pair's whole word.
 Inclusion language_inclusion(const Automaton& a, const Automaton& b);
 
 }  // namespace swarmcheck::model::supervisor

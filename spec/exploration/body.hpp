@@ -17,4 +17,21 @@ namespace swarmcheck::exploration {
 BodyState body_step(const RobotParams& rp, const BodyState& s, double servo_left,
                     double servo_right, double dt_s);
 
+// cos and sin of a heading. A caller that keeps them from the step that produced theta (the same
+// function of the same double gives the same bits) skips the trigonometry of a straight drive.
+struct Heading {
+  double cos_theta;
+  double sin_theta;
+};
+Heading heading_of(double theta_rad);
+
+struct BodyStep {
+  BodyState state;
+  Heading heading;   // heading_of(state.theta_rad)
+};
+
+// body_step, given h = heading_of(s.theta_rad); body_step is this with h computed.
+BodyStep body_step_with_heading(const RobotParams& rp, const BodyState& s, const Heading& h,
+                                double servo_left, double servo_right, double dt_s);
+
 }  // namespace swarmcheck::exploration

@@ -1,99 +1,129 @@
 #include "spec/exploration/choice.hpp"
 
-#include <cmath>
-#include <vector>
-
 #include "spec/exploration/rng.hpp"
 #include "spec/util/demand.hpp"
 
 namespace swarmcheck::exploration {
 namespace {
 
-int32_t first_free(std::span<const Candidate> c) {
-  for (std::size_t k = 0; k < c.size(); ++k)
-    if (!c[k].blocked) return static_cast<int32_t>(k);
-  return -1;
-}
-
-int32_t count_free(std::span<const Candidate> c) {
-  int32_t n = 0;
-  for (const auto& x : c) n += x.blocked ? 0 : 1;
-  return n;
-}
-
-// The k-th (0-based) free candidate.
-int32_t nth_free(std::span<const Candidate> c, int32_t k) {
-  for (std::size_t i = 0; i < c.size(); ++i)
-    if (!c[i].blocked && k-- == 0) return static_cast<int32_t>(i);
-  SWARM_DEMAND(false);
-  return -1;
-}
-
-// Settle the target from the best: itself when free, else `substitute` (-1: stay).
-Choice settle(std::span<const Candidate> c, int32_t best, int32_t substitute) {
-  Choice ch;
-  ch.best = best;
-  if (!c[static_cast<std::size_t>(best)].blocked) {
-    ch.target = best;
-  } else {
-    ch.target = substitute;
-    ch.fallback = substitute >= 0;
-  }
-  return ch;
-}
-
-}  // namespace
-
-Choice choose_thesis(std::span<const Candidate> c, const Params& p) {
-  if (c.empty()) return Choice{};
-  const double eta_term = std::pow(p.eta, p.lambda);
+int32_t best_thesis(std::span<const Candidate> c, const ChoiceTerms& t) {
   double sum = 0.0;
-  for (const auto& x : c) sum += std::pow(x.tau, p.phi) * eta_term;
-  double best_value = std::pow(1000.0, p.phi) * eta_term / sum;
+  for (const auto& x : c) sum += pheromone_key(x.tau, t.phi) * t.eta_term;
+  double best_value = t.thesis_best_start / sum;
   int32_t best = -1;
   for (std::size_t k = 0; k < c.size(); ++k) {
-    const double prob = std::pow(c[k].tau, p.phi) * eta_term / sum;
+    const double prob = pheromone_key(c[k].tau, t.phi) * t.eta_term / sum;
     if (prob <= best_value) {
       best_value = prob;
       best = static_cast<int32_t>(k);
     }
   }
-  if (best < 0) best = static_cast<int32_t>(c.size()) - 1;   // every candidate tied
-  return settle(c, best, first_free(c));
+  return best < 0 ? static_cast<int32_t>(c.size()) - 1 : best;   // every candidate tied
 }
 
-Choice choose_deterministic(std::span<const Candidate> c, const Params& p) {
-  if (c.empty()) return Choice{};
+int32_t best_last_minimum(std::span<const Candidate> c, const ChoiceTerms& t) {
   int32_t best = 0;
-  double best_key = std::pow(c[0].tau, p.phi);
+  double best_key = pheromone_key(c[0].tau, t.phi);
   for (std::size_t k = 1; k < c.size(); ++k) {
-    const double key = std::pow(c[k].tau, p.phi);
+    const double key = pheromone_key(c[k].tau, t.phi);
     if (key <= best_key) {
       best_key = key;
       best = static_cast<int32_t>(k);
     }
   }
-  return settle(c, best, first_free(c));
+  return best;
 }
 
-Choice choose_stochastic(std::span<const Candidate> c, const Params& p, uint64_t tie_key,
-                         uint64_t fallback_key) {
-  if (c.empty()) return Choice{};
-  double min_key = std::pow(c[0].tau, p.phi);
-  for (std::size_t k = 1; k < c.size(); ++k) min_key = std::fmin(min_key, std::pow(c[k].tau, p.phi));
-  int32_t ties = 0;
-  for (const auto& x : c) ties += std::pow(x.tau, p.phi) == min_key ? 1 : 0;
+int32_t best_uniform_minimum(std::span<const Candidate> c, const ChoiceTerms& t, const DrawSite& site) {
+  double min_key = pheromone_key(c[0].tau, t.phi);
+  for (std::size_t k = 1; k < c.size(); ++k) min_key = std::fmin(min_key, pheromone_key(c[k].tau, t.phi));
+  uint32_t ties = 0;
+  for (const auto& x : c) ties += pheromone_key(x.tau, t.phi) == min_key ? 1U : 0U;
   SWARM_DEMAND(ties >= 1);
-  int32_t pick = static_cast<int32_t>(uniform_index(tie_key, static_cast<uint32_t>(ties)));
-  int32_t best = -1;
-  for (std::size_t k = 0; k < c.size() && best < 0; ++k)
-    if (std::pow(c[k].tau, p.phi) == min_key && pick-- == 0) best = static_cast<int32_t>(k);
-  const int32_t n_free = count_free(c);
-  const int32_t substitute =
-      n_free == 0 ? -1
-                  : nth_free(c, static_cast<int32_t>(
-                                    uniform_index(fallback_key, static_cast<uint32_t>(n_free))));
-  return settle(c, best, substitute);
+  uint32_t pick = uniform_index(rng_key(site.seed, site.tick, site.robot, Purpose::tie_break), ties);
+  for (std::size_t k = 0; k < c.size(); ++k)
+    if (pheromone_key(c[k].tau, t.phi) == min_key && pick-- == 0) return static_cast<int32_t>(k);
+  SWARM_DEMAND(false);
+  return -1;
+}
+
+int32_t fallback_first_free(std::span<const Candidate> c) {
+  for (std::size_t k = 0; k < c.size(); ++k)
+    if (!c[k].blocked) return static_cast<int32_t>(k);
+  return -1;
+}
+
+int32_t fallback_uniform_free(std::span<const Candidate> c, const DrawSite& site) {
+  uint32_t n_free = 0;
+  for (const auto& x : c) n_free += x.blocked ? 0U : 1U;
+  if (n_free == 0) return -1;
+  uint32_t pick = uniform_index(rng_key(site.seed, site.tick, site.robot, Purpose::fallback), n_free);
+  for (std::size_t k = 0; k < c.size(); ++k)
+    if (!c[k].blocked && pick-- == 0) return static_cast<int32_t>(k);
+  SWARM_DEMAND(false);
+  return -1;
+}
+
+int32_t best_of(const RuleDescriptor& rules, std::span<const Candidate> c, const ChoiceTerms& t,
+                const DrawSite& site) {
+  switch (rules.best) {
+    case BestRule::thesis_normalised: return best_thesis(c, t);
+    case BestRule::last_minimum: return best_last_minimum(c, t);
+    case BestRule::uniform_minimum: return best_uniform_minimum(c, t, site);
+  }
+  SWARM_DEMAND(false);
+  return -1;
+}
+
+int32_t fallback_of(const RuleDescriptor& rules, std::span<const Candidate> c, const DrawSite& site) {
+  switch (rules.fallback) {
+    case FallbackRule::first_free: return fallback_first_free(c);
+    case FallbackRule::uniform_free: return fallback_uniform_free(c, site);
+  }
+  SWARM_DEMAND(false);
+  return -1;
+}
+
+}  // namespace
+
+ChoiceTerms choice_terms(const Params& p) {
+  const double eta_term = std::pow(p.eta, p.lambda);
+  return ChoiceTerms{p.phi, eta_term, std::pow(1000.0, p.phi) * eta_term};
+}
+
+Choice choose(const RuleDescriptor& rules, const ChoiceTerms& terms, std::span<const Candidate> c,
+              const DrawSite& site) {
+  if (c.empty()) return Choice{};
+  Choice ch;
+  ch.best = best_of(rules, c, terms, site);
+  SWARM_DEMAND(ch.best >= 0 && ch.best < static_cast<int32_t>(c.size()));
+  if (!c[static_cast<std::size_t>(ch.best)].blocked) {
+    ch.target = ch.best;
+  } else {
+    ch.target = fallback_of(rules, c, site);
+    ch.fallback = ch.target >= 0;
+  }
+  return ch;
+}
+
+RobotDecision decide(const RuleDescriptor& rules, CellIndex current, std::span<const Candidate> c,
+                     const Choice& ch) {
+  RobotDecision d;
+  d.deposit_centre = current;
+  if (ch.best < 0) return d;   // no candidate at all (a 1 x 1 map): stay
+  const CellIndex best = c[static_cast<std::size_t>(ch.best)].cell;
+  if (ch.target >= 0) {
+    d.moves = true;
+    d.to = c[static_cast<std::size_t>(ch.target)].cell;
+    d.occupies = !ch.fallback || rules.fallback_effect == FallbackEffect::occupy_and_mark;
+    d.marks = d.occupies;
+    d.mark = d.to;
+  } else if (rules.stay == StayEffect::mark_best_visited) {
+    d.marks = true;
+    d.mark = best;
+  }
+  d.deposit_centre = rules.deposit_centre == DepositCentre::best ? best : (d.moves ? d.to : current);
+  return d;
 }
 
 }  // namespace swarmcheck::exploration

@@ -21,10 +21,10 @@ std::string check_occupancy(const Scenario& s, std::span<const RobotRecord> robo
 
 std::string check_progress(const Scenario& s, const StepRecord& r) {
   if (r.visited < 0) return "visited is negative";
-  if (s.rule != RuleSet::thesis && r.visited > r.free_cells)
+  if (rules_of(s.rule).keeps_occupancy_invariants && r.visited > r.free_cells)
     return "visited exceeds the free cells (a cell was counted twice)";
   if (!(r.eP >= 0)) return "eP is negative or NaN";
-  if (s.rule != RuleSet::thesis && r.eP > 100.0) return "eP exceeds 100";
+  if (rules_of(s.rule).keeps_occupancy_invariants && r.eP > 100.0) return "eP exceeds 100";
   if (!(r.sTime >= 0)) return "sTime is negative or NaN";
   return {};
 }

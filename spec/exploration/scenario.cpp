@@ -7,7 +7,9 @@
 #include <set>
 #include <sstream>
 
+#include "spec/exploration/domains.hpp"
 #include "spec/exploration/neighbourhood.hpp"
+#include "spec/util/demand.hpp"
 #include "spec/util/hana_json.hpp"
 #include "spec/util/json_text.hpp"
 
@@ -25,21 +27,36 @@ void require(bool ok, const std::string& path, const std::string& expected, doub
   if (!ok) throw InputError(path, "expected " + expected + ", got " + fmt_num(got));
 }
 
-void validate_params(const Params& p, Mode mode) {
-  require(p.s_range >= 1 && p.s_range <= kRangeMax, "params.s_range",
-          "an integer in [1, " + std::to_string(kRangeMax) + "]", p.s_range);
-  require(std::isfinite(p.a1) && p.a1 > 0, "params.a1", "a finite number > 0", p.a1);
-  require(std::isfinite(p.a2) && p.a2 > 0, "params.a2", "a finite number > 0", p.a2);
-  require(std::isfinite(p.epsilon) && p.epsilon >= 0, "params.epsilon", "a finite number >= 0",
-          p.epsilon);
-  require(std::isfinite(p.max_ph) && p.max_ph >= 0, "params.max_ph", "a finite number >= 0",
-          p.max_ph);
-  require(std::isfinite(p.ertu) && p.ertu >= 0, "params.ertu", "a finite number >= 0", p.ertu);
-  require(std::isfinite(p.eta) && p.eta > 0, "params.eta", "a finite number > 0", p.eta);
-  require(std::isfinite(p.phi), "params.phi", "a finite number", p.phi);
-  require(std::isfinite(p.lambda), "params.lambda", "a finite number", p.lambda);
-  require(std::isfinite(p.step_size) && p.step_size > 0, "params.step_size",
-          "a finite number > 0", p.step_size);
+// A numeric key's current value, by its JSON path in kScenarioDomains.
+double value_at(const Scenario& s, std::string_view path) {
+  double out = 0.0;
+  bool found = false;
+  auto pick = [&](const auto& object, std::string_view name) {
+    boost::hana::for_each(boost::hana::accessors<std::decay_t<decltype(object)>>(), [&](auto pair) {
+      using Member = std::decay_t<decltype(boost::hana::second(pair)(object))>;
+      if constexpr (std::is_arithmetic_v<Member>) {
+        if (name == boost::hana::to<const char*>(boost::hana::first(pair))) {
+          out = static_cast<double>(boost::hana::second(pair)(object));
+          found = true;
+        }
+      }
+    });
+  };
+  if (path.starts_with("params.")) pick(s.params, path.substr(7));
+  else pick(s, path);
+  SWARM_DEMAND(found);
+  return out;
+}
+
+void validate_domains(const Scenario& s, DomainStage stage) {
+  for (const Domain& d : kScenarioDomains) {
+    if (d.stage != stage) continue;
+    const double v = value_at(s, d.path);
+    require(in_domain(d, v), std::string(d.path), std::string(d.expected), v);
+  }
+}
+
+void validate_cross_params(const Params& p, Mode mode) {
   if (mode == Mode::cosim)
     require(p.step_size <= kCosimStepMax_s, "params.step_size",
             "at most " + fmt_num(kCosimStepMax_s) +
@@ -122,14 +139,11 @@ Scenario default_scenario() {
 }
 
 void validate(const Scenario& s) {
-  require(s.map_size >= 1 && s.map_size <= kMapSizeMax, "map_size",
-          "an integer in [1, " + std::to_string(kMapSizeMax) + "]", s.map_size);
-  require(std::isfinite(s.cell_size) && s.cell_size > 0, "cell_size", "a finite number > 0",
-          s.cell_size);
+  validate_domains(s, DomainStage::before_cells);
   validate_cells(s);
-  validate_params(s.params, s.mode);
-  require(s.max_steps >= 0 && s.max_steps <= kStepsMax, "max_steps",
-          "an integer in [0, 2^31 - 1]", static_cast<double>(s.max_steps));
+  validate_domains(s, DomainStage::params);
+  validate_cross_params(s.params, s.mode);
+  validate_domains(s, DomainStage::after_params);
 }
 
 Scenario parse_scenario(const std::string& text, const std::string& file) {

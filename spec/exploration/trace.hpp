@@ -3,6 +3,7 @@
 // {"format": "swarmcheck-trace", "format_version": 1, "tool_version", "system": "exploration",
 //  "scenario": {...}, "seed", "rule", "mode"}; then one StepRecord per line (derived from its
 // Hana declaration), from step 0 (the initial state) on. Doubles are written to round-trip.
+// Format version 2 (`run --trace-field K`) adds field records: spec/exploration/trace_field.hpp.
 #include <string>
 
 #include "spec/exploration/types.hpp"

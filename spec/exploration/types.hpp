@@ -11,6 +11,7 @@
 #include <utility>
 #include <vector>
 
+#include "spec/exploration/rule_set.hpp"
 #include "spec/util/hana_json.hpp"
 
 namespace swarmcheck::exploration {
@@ -19,7 +20,6 @@ using Point_m = std::array<double, 2>;      // [x, y] in metres
 using CellIndex = std::array<int32_t, 2>;   // [i, j], 0-based; cell (i, j) covers
                                             // [i*s, (i+1)*s) x [j*s, (j+1)*s)
 
-enum class RuleSet { thesis, deterministic, stochastic };
 enum class Mode { abstract, cosim };
 
 // The exploration algorithm's parameters, with the thesis's names.
@@ -131,14 +131,6 @@ struct StepRecord {
 }  // namespace swarmcheck::exploration
 
 namespace swarmcheck::json_io {
-template <>
-struct EnumNames<exploration::RuleSet> {
-  static constexpr std::array<std::pair<exploration::RuleSet, std::string_view>, 3> names{{
-      {exploration::RuleSet::thesis, "thesis"},
-      {exploration::RuleSet::deterministic, "deterministic"},
-      {exploration::RuleSet::stochastic, "stochastic"},
-  }};
-};
 template <>
 struct EnumNames<exploration::Mode> {
   static constexpr std::array<std::pair<exploration::Mode, std::string_view>, 2> names{{

@@ -1,7 +1,7 @@
 // The region-entry rule of execution.
 #include "spec/mission/avoidance.hpp"
 
-namespace swarmcheck::spec::mission {
+namespace swarmcheck::mission {
 
 std::vector<std::string> entry_events(const Mission& m, std::size_t robot, const Point& from,
                                       const Point& to) {
@@ -23,4 +23,4 @@ std::optional<std::string> fire_all(const Mission& m, const std::string& q,
   return state;
 }
 
-}  // namespace swarmcheck::spec::mission
+}  // namespace swarmcheck::mission

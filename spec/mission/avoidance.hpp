@@ -12,7 +12,7 @@
 
 #include "spec/mission/mission.hpp"
 
-namespace swarmcheck::spec::mission {
+namespace swarmcheck::mission {
 
 // The entry events robot r fires moving from `from` to `to`, regions in file order.
 std::vector<std::string> entry_events(const Mission& m, std::size_t robot, const Point& from,
@@ -22,4 +22,4 @@ std::vector<std::string> entry_events(const Mission& m, std::size_t robot, const
 std::optional<std::string> fire_all(const Mission& m, const std::string& q,
                                     const std::vector<std::string>& events);
 
-}  // namespace swarmcheck::spec::mission
+}  // namespace swarmcheck::mission

@@ -8,7 +8,7 @@
 #include "spec/util/json_text.hpp"
 #include "spec/util/input_error.hpp"
 
-namespace swarmcheck::spec::mission {
+namespace swarmcheck::mission {
 
 namespace {
 
@@ -110,4 +110,4 @@ std::vector<std::string> initial_entries(const Mission& m) {
   return out;
 }
 
-}  // namespace swarmcheck::spec::mission
+}  // namespace swarmcheck::mission

@@ -24,7 +24,7 @@
 
 #include "spec/supervisor/automaton.hpp"
 
-namespace swarmcheck::spec::mission {
+namespace swarmcheck::mission {
 
 using Point = std::array<double, 2>;  // [x, y] in metres
 
@@ -123,4 +123,4 @@ bool inside(const Region& g, const Point& p);  // strict
 const std::string* event_for(const Mission& m, MeaningKind kind, std::size_t robot,
                              std::size_t target);
 
-}  // namespace swarmcheck::spec::mission
+}  // namespace swarmcheck::mission

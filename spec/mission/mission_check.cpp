@@ -8,7 +8,7 @@
 #include "spec/supervisor/semantics.hpp"
 #include "spec/util/input_error.hpp"
 
-namespace swarmcheck::spec::mission {
+namespace swarmcheck::mission {
 
 namespace {
 
@@ -178,4 +178,4 @@ Mission check_mission(const MissionDecl& d, const supervisor::Automaton& fsm,
   }
 }
 
-}  // namespace swarmcheck::spec::mission
+}  // namespace swarmcheck::mission

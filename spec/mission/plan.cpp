@@ -5,7 +5,7 @@
 
 #include "spec/supervisor/automaton.hpp"
 
-namespace swarmcheck::spec::mission {
+namespace swarmcheck::mission {
 
 PlanQuery query_from(const Mission& m, const std::string& from) {
   PlanQuery q;
@@ -74,4 +74,4 @@ std::vector<std::vector<std::size_t>> task_sequences(const Mission& m,
   return out;
 }
 
-}  // namespace swarmcheck::spec::mission
+}  // namespace swarmcheck::mission

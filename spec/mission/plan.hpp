@@ -16,7 +16,7 @@
 
 #include "spec/mission/mission.hpp"
 
-namespace swarmcheck::spec::mission {
+namespace swarmcheck::mission {
 
 struct PlanQuery {
   std::string from;              // an FSM state
@@ -63,4 +63,4 @@ PathEvaluation evaluate_path(const Mission& m, const PlanQuery& q,
 std::vector<std::vector<std::size_t>> task_sequences(const Mission& m,
                                                      const std::vector<std::string>& events);
 
-}  // namespace swarmcheck::spec::mission
+}  // namespace swarmcheck::mission

@@ -1,6 +1,6 @@
 #include "spec/supervisor/automaton.hpp"
 
-namespace swarmcheck::spec::supervisor {
+namespace swarmcheck::supervisor {
 
 std::optional<State> initial_state(const Automaton& a) {
   if (a.states.empty()) return std::nullopt;
@@ -44,4 +44,4 @@ std::string well_formedness_error(const Automaton& a) {
   return "";
 }
 
-}  // namespace swarmcheck::spec::supervisor
+}  // namespace swarmcheck::supervisor

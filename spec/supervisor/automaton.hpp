@@ -16,7 +16,7 @@
 #include <string>
 #include <vector>
 
-namespace swarmcheck::spec::supervisor {
+namespace swarmcheck::supervisor {
 
 struct EventAttr {
   bool controllable = true;  // UMDES default when a file omits the attribute: c
@@ -53,4 +53,4 @@ std::size_t transition_count(const Automaton& a);
 // operations must only ever produce well-formed automata.
 std::string well_formedness_error(const Automaton& a);
 
-}  // namespace swarmcheck::spec::supervisor
+}  // namespace swarmcheck::supervisor

@@ -2,7 +2,7 @@
 
 #include "spec/util/input_error.hpp"
 
-namespace swarmcheck::spec::supervisor {
+namespace swarmcheck::supervisor {
 
 namespace {
 std::string attr_words(const EventAttr& a) {
@@ -117,4 +117,4 @@ bool in_marked_language(const Automaton& a, const std::vector<Event>& word) {
   return q && a.marked.count(*q) != 0;
 }
 
-}  // namespace swarmcheck::spec::supervisor
+}  // namespace swarmcheck::supervisor

@@ -10,6 +10,7 @@
 //   G1 || G2  pairs (x1, x2) reachable by sync_successor from (q01, q02); marked iff both are
 //   S controllable w.r.t. plant G  iff at every reachable (x, y) of G || S no uncontrollable event
 //             enabled by G at x is an event of S that S disables at y
+//   L(A) in L(B)  every word of A is a word of B; likewise Lm (see Inclusion below)
 //   SupCNB(G, S)  the greatest X in Ac(G || S) whose every state is supcon_good in X and reaches
 //             a marked state inside X; G || S restricted to X, then to its accessible part: the Ramadge-Wonham supremal controllable
 //             nonblocking sublanguage of Lm(G) and Lm(S) (empty automaton when q0 is not kept).
@@ -20,7 +21,7 @@
 
 #include "spec/supervisor/automaton.hpp"
 
-namespace swarmcheck::spec::supervisor {
+namespace swarmcheck::supervisor {
 
 // ---- alphabets -----------------------------------------------------------------------------
 
@@ -71,4 +72,16 @@ std::optional<State> run(const Automaton& a, const std::vector<Event>& word);
 bool in_closed_language(const Automaton& a, const std::vector<Event>& word);
 bool in_marked_language(const Automaton& a, const std::vector<Event>& word);
 
-}  // namespace swarmcheck::spec::supervisor
+// L(A) in L(B) and Lm(A) in Lm(B). When an inclusion fails, its witness is the least word of the
+// difference (L(A) minus L(B), or Lm(A) minus Lm(B)) in shortlex order: shortest first, then
+// event names compared word by word. A breadth-first search over the pairs (state of A, state of
+// B or none), events in name order, first finds exactly that word.
+struct Inclusion {
+  bool closed = true;
+  bool marked = true;
+  std::vector<Event> closed_witness;  // empty when closed
+  std::vector<Event> marked_witness;  // empty when marked
+  friend bool operator==(const Inclusion&, const Inclusion&) = default;
+};
+
+}  // namespace swarmcheck::supervisor

@@ -22,7 +22,7 @@ TEST(Impl, WholeDefaultRunsEqualTheModelInEveryRuleSetAndMode) {
       Scenario s = default_scenario();
       s.rule = rule;
       s.mode = mode;
-      model::ExplorationModel m(s);
+      swarmcheck::model::exploration::ExplorationModel m(s);
       Exploration x(s);
       while (!m.done()) {
         m.step();
@@ -33,7 +33,7 @@ TEST(Impl, WholeDefaultRunsEqualTheModelInEveryRuleSetAndMode) {
       }
       EXPECT_TRUE(x.done());
       EXPECT_EQ(first_difference_text(m.record(), x.record()), "");
-      EXPECT_EQ(x.completion_step(), m.environment().completion_step());
+      EXPECT_EQ(x.completion_step(), m.completion_step());
     }
 }
 
@@ -52,7 +52,7 @@ TEST(Impl, ParallelGroupPlanningGivesExactlyTheSequentialResultWithThousandsOfRo
   ExplorationOptions sequential;
   sequential.parallel_min_robots = 1 << 30;
   Exploration a(s, parallel), b(s, sequential);
-  model::ExplorationModel m(s);
+  swarmcheck::model::exploration::ExplorationModel m(s);
   while (!m.done()) {
     a.step();
     b.step();

@@ -1,6 +1,7 @@
 #!/bin/sh
-# Installs swarmcheck into a temporary prefix, then configures, builds and runs examples/ (a
-# consumer that only does find_package(swarmcheck) + target_link_libraries) against it.
+# Installs swarmcheck into a temporary prefix, then configures, builds and runs examples/ (three
+# consumers that only do find_package(swarmcheck) + target_link_libraries) against it. The
+# system-B consumers read the thesis files from the source tree's scenarios/thesis.
 set -eu
 src=$1 build=$2 link_flags=${3:-}   # a sanitizer build passes its -fsanitize flags for the link
 work=$(mktemp -d)
@@ -10,3 +11,10 @@ cmake -S "$src/examples" -B "$work/build" -G Ninja -DCMAKE_PREFIX_PATH="$work/pr
   -DCMAKE_EXE_LINKER_FLAGS="$link_flags" > "$work/configure.log"
 cmake --build "$work/build" > "$work/build.log"
 "$work/build/explore"
+"$work/build/supervise" "$src/scenarios/thesis/control2.fsm" "$src/scenarios/thesis/components"
+"$work/build/mission" "$src/scenarios/thesis/thesis-mission.json"
+# The installed libraries carry no reference-model code (the model is the harness's oracle).
+if find "$work/prefix" -name 'libswarmcheck*.a' -exec nm -C {} + | grep -q 'model::'; then
+  echo "install_consumer: the installed libraries contain model:: symbols" >&2
+  exit 1
+fi

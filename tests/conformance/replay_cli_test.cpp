@@ -65,7 +65,7 @@ TEST(ReplayVerb, AMalformedTraceExitsTwoNamingFileAndLine) {
 // The acceptance campaign (500 cases, seed 1) in the release build; a sanitizer build,
 // some 40x slower, runs the first 60 of the same cases.
 TEST(ConformVerb, AgreesOnTheAcceptanceCampaign) {
-  const Result r = sh("conform --cases " + std::to_string(SWARMCHECK_CONFORM_CASES) + " --seed 1 --json");
+  const Result r = sh("conform --system exploration --cases " + std::to_string(SWARMCHECK_CONFORM_CASES) + " --seed 1 --json");
   ASSERT_EQ(r.status, 0) << r.out;
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_TRUE(j.at("agree").get<bool>());

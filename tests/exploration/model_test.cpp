@@ -11,7 +11,7 @@
 #include "tests/exploration/scenario_gen.hpp"
 
 using namespace swarmcheck::exploration;
-using swarmcheck::exploration::model::ExplorationModel;
+using swarmcheck::model::exploration::ExplorationModel;
 using swarmcheck::exploration::testing::gen_scenario;
 
 namespace {
@@ -36,8 +36,8 @@ TEST(Model, DefaultScenarioReachesFullExplorationInCosimMode) {
   const StepRecord r = m.record();
   EXPECT_EQ(r.eP, 100.0);
   EXPECT_EQ(r.visited, 96);
-  ASSERT_TRUE(m.environment().completion_step().has_value());
-  EXPECT_EQ(r.sTime, static_cast<double>(*m.environment().completion_step()) * 0.1);
+  ASSERT_TRUE(m.completion_step().has_value());
+  EXPECT_EQ(r.sTime, static_cast<double>(*m.completion_step()) * 0.1);
   EXPECT_GT(r.planning_steps, 10);   // robots really drove from cell to cell
 }
 
@@ -45,12 +45,12 @@ TEST(Model, InitialDepositIsTheThesisValueAroundEachStartCell) {
   Scenario s = default_scenario();
   s.robots = {{0.5, 0.5}};
   ExplorationModel m(s);
-  EXPECT_EQ(m.environment().cell({0, 0}).pheromone, 3.0);
-  EXPECT_EQ(m.environment().cell({1, 0}).pheromone, 1.2706705664732254);
-  EXPECT_EQ(m.environment().cell({1, 1}).pheromone, 1.1182114931239124);
-  EXPECT_EQ(m.environment().cell({2, 2}).pheromone, 0.0);
-  EXPECT_TRUE(m.environment().cell({0, 0}).visited);
-  EXPECT_EQ(m.environment().cell({0, 0}).occupant, 0);
+  EXPECT_EQ(m.cell({0, 0}).pheromone, 3.0);
+  EXPECT_EQ(m.cell({1, 0}).pheromone, 1.2706705664732254);
+  EXPECT_EQ(m.cell({1, 1}).pheromone, 1.1182114931239124);
+  EXPECT_EQ(m.cell({2, 2}).pheromone, 0.0);
+  EXPECT_TRUE(m.cell({0, 0}).visited);
+  EXPECT_EQ(m.cell({0, 0}).occupant, 0);
 }
 
 // One abstract step on a 3x3 map from the centre: the diagonal cells hold the least pheromone
@@ -66,9 +66,9 @@ TEST(Model, AbstractStepEvaporatesThenDepositsAroundTheNewCell) {
   EXPECT_EQ(m.record().robots[0].cell, (CellIndex{2, 2}));
   EXPECT_EQ(m.record().robots[0].waypoint, (Point_m{2.5, 2.5}));
   const double f = 1.0 - 0.1 * 0.1;
-  EXPECT_EQ(m.environment().cell({2, 2}).pheromone, 1.1182114931239124 * f + 3.0);
-  EXPECT_EQ(m.environment().cell({0, 0}).pheromone, 1.1182114931239124 * f);   // outside the new window
-  EXPECT_EQ(m.environment().cell({1, 1}).pheromone, 3.0 * f + 1.1182114931239124);
+  EXPECT_EQ(m.cell({2, 2}).pheromone, 1.1182114931239124 * f + 3.0);
+  EXPECT_EQ(m.cell({0, 0}).pheromone, 1.1182114931239124 * f);   // outside the new window
+  EXPECT_EQ(m.cell({1, 1}).pheromone, 3.0 * f + 1.1182114931239124);
   EXPECT_EQ(m.record().visited, 2);
 }
 
@@ -91,15 +91,15 @@ TEST(Model, ThesisFallbackMovesACopyAndDepositsAroundTheChosenCell) {
   EXPECT_EQ(fixed.record().robots[0].cell, (CellIndex{0, 1}));
   // thesis: the fallback moved a copy, so (0, 1) is neither occupied nor visited on the map,
   // and (0, 0) was released.
-  EXPECT_EQ(thesis.environment().cell({0, 1}).occupant, -1);
-  EXPECT_FALSE(thesis.environment().cell({0, 1}).visited);
-  EXPECT_EQ(thesis.environment().cell({0, 0}).occupant, -1);
-  EXPECT_EQ(fixed.environment().cell({0, 1}).occupant, 0);
-  EXPECT_TRUE(fixed.environment().cell({0, 1}).visited);
+  EXPECT_EQ(thesis.cell({0, 1}).occupant, -1);
+  EXPECT_FALSE(thesis.cell({0, 1}).visited);
+  EXPECT_EQ(thesis.cell({0, 0}).occupant, -1);
+  EXPECT_EQ(fixed.cell({0, 1}).occupant, 0);
+  EXPECT_TRUE(fixed.cell({0, 1}).visited);
   // thesis: the deposit centre was the obstacle (1, 1); deterministic: the robot's cell (0, 1).
   const double f = 1.0 - 0.1 * 0.1;
-  EXPECT_EQ(thesis.environment().cell({1, 1}).pheromone, 1.1182114931239124 * f + 3.0);
-  EXPECT_EQ(fixed.environment().cell({1, 1}).pheromone, 1.1182114931239124 * f + 1.2706705664732254);
+  EXPECT_EQ(thesis.cell({1, 1}).pheromone, 1.1182114931239124 * f + 3.0);
+  EXPECT_EQ(fixed.cell({1, 1}).pheromone, 1.1182114931239124 * f + 1.2706705664732254);
   EXPECT_EQ(thesis.record().visited, 3);   // the start cells and robot 1's new cell
   EXPECT_EQ(fixed.record().visited, 4);
 }
@@ -110,7 +110,7 @@ RC_GTEST_PROP(Model, PheromoneIsNeverNegative, ()) {
   while (!m.done()) {
     m.step();
     for (int32_t i = 0; i < s.map_size; ++i)
-      for (int32_t j = 0; j < s.map_size; ++j) RC_ASSERT(m.environment().cell({i, j}).pheromone >= 0.0);
+      for (int32_t j = 0; j < s.map_size; ++j) RC_ASSERT(m.cell({i, j}).pheromone >= 0.0);
   }
 }
 

@@ -95,11 +95,17 @@ std::vector<Candidate> row(std::initializer_list<std::pair<double, bool>> taus) 
   for (auto [tau, blocked] : taus) c.push_back(Candidate{{0, j++}, tau, blocked});
   return c;
 }
+
+// The choice of a rule set's row, with the seed, tick and robot of the draws.
+Choice choose_by(RuleSet rule, const std::vector<Candidate>& c, const Params& p, uint64_t seed = 0,
+                 int64_t tick = 0, int32_t robot = 0) {
+  return choose(rules_of(rule), choice_terms(p), c, DrawSite{seed, tick, robot});
+}
 }  // namespace
 
 TEST(Choice, ThesisTakesTheLastOfEqualMinima) {
   const auto c = row({{1.0, false}, {0.5, false}, {2.0, false}, {0.5, false}});
-  const Choice ch = choose_thesis(c, default_params());
+  const Choice ch = choose_by(RuleSet::thesis, c, default_params());
   EXPECT_EQ(ch.best, 3);
   EXPECT_EQ(ch.target, 3);
   EXPECT_FALSE(ch.fallback);
@@ -107,7 +113,7 @@ TEST(Choice, ThesisTakesTheLastOfEqualMinima) {
 
 TEST(Choice, ThesisBlockedBestFallsBackToTheFirstFreeCell) {
   const auto c = row({{1.0, true}, {3.0, false}, {0.5, true}, {2.0, false}});
-  const Choice ch = choose_thesis(c, default_params());
+  const Choice ch = choose_by(RuleSet::thesis, c, default_params());
   EXPECT_EQ(ch.best, 2);
   EXPECT_EQ(ch.target, 1);
   EXPECT_TRUE(ch.fallback);
@@ -115,43 +121,42 @@ TEST(Choice, ThesisBlockedBestFallsBackToTheFirstFreeCell) {
 
 TEST(Choice, ThesisBlockedBestWithNoFreeCellStays) {
   const auto c = row({{1.0, true}, {0.5, true}});
-  const Choice ch = choose_thesis(c, default_params());
+  const Choice ch = choose_by(RuleSet::thesis, c, default_params());
   EXPECT_EQ(ch.best, 1);
   EXPECT_EQ(ch.target, -1);
 }
 
 TEST(Choice, ThesisAllZeroPheromoneTiesEveryCandidate) {
   const auto c = row({{0.0, false}, {0.0, false}, {0.0, false}});
-  EXPECT_EQ(choose_thesis(c, default_params()).best, 2);
+  EXPECT_EQ(choose_by(RuleSet::thesis, c, default_params()).best, 2);
 }
 
 TEST(Choice, ThesisIgnoresCellsAboveTheInitialBestOfAThousand) {
   // best starts at 1000^phi eta^lambda / sum: only cells scoring at most that qualify.
   const auto c = row({{500.0, false}, {2000.0, false}});
-  EXPECT_EQ(choose_thesis(c, default_params()).best, 0);
+  EXPECT_EQ(choose_by(RuleSet::thesis, c, default_params()).best, 0);
 }
 
 TEST(Choice, DeterministicMatchesTheLastMinimumAndFirstFreeFallback) {
   Params p = default_params();
-  EXPECT_EQ(choose_deterministic(row({{0.2, false}, {0.2, false}, {0.3, false}}), p).best, 1);
-  const Choice ch = choose_deterministic(row({{0.9, false}, {0.1, true}, {0.5, false}}), p);
+  EXPECT_EQ(choose_by(RuleSet::deterministic, row({{0.2, false}, {0.2, false}, {0.3, false}}), p).best, 1);
+  const Choice ch = choose_by(RuleSet::deterministic, row({{0.9, false}, {0.1, true}, {0.5, false}}), p);
   EXPECT_EQ(ch.best, 1);
   EXPECT_EQ(ch.target, 0);
-  EXPECT_EQ(choose_deterministic({}, p).target, -1);
+  EXPECT_EQ(choose_by(RuleSet::deterministic, {}, p).target, -1);
 }
 
 TEST(Choice, DeterministicWithNegativePhiPrefersTheStrongestPheromone) {
   Params p = default_params();
   p.phi = -1.0;   // tau^-1: zero pheromone scores +inf
-  EXPECT_EQ(choose_deterministic(row({{0.0, false}, {4.0, false}, {2.0, false}}), p).best, 1);
+  EXPECT_EQ(choose_by(RuleSet::deterministic, row({{0.0, false}, {4.0, false}, {2.0, false}}), p).best, 1);
 }
 
 TEST(Choice, StochasticReachesEveryTiedMinimumAndOnlyThose) {
   const auto c = row({{0.5, false}, {1.0, false}, {0.5, false}, {0.5, false}});
   std::set<int32_t> seen;
   for (uint64_t s = 0; s < 200; ++s) {
-    const Choice ch = choose_stochastic(c, default_params(), rng_key(s, 0, 0, Purpose::tie_break),
-                                        rng_key(s, 0, 0, Purpose::fallback));
+    const Choice ch = choose_by(RuleSet::stochastic, c, default_params(), s, 0, 0);
     seen.insert(ch.best);
   }
   EXPECT_EQ(seen, (std::set<int32_t>{0, 2, 3}));
@@ -161,9 +166,7 @@ TEST(Choice, StochasticFallbackPicksOnlyFreeCells) {
   const auto c = row({{2.0, false}, {0.1, true}, {3.0, true}, {4.0, false}});
   std::set<int32_t> seen;
   for (uint64_t s = 0; s < 200; ++s)
-    seen.insert(choose_stochastic(c, default_params(), rng_key(s, 1, 2, Purpose::tie_break),
-                                  rng_key(s, 1, 2, Purpose::fallback))
-                    .target);
+    seen.insert(choose_by(RuleSet::stochastic, c, default_params(), s, 1, 2).target);
   EXPECT_EQ(seen, (std::set<int32_t>{0, 3}));
 }
 

@@ -34,7 +34,7 @@ inline rc::Gen<Scenario> gen_scenario(int32_t map_max = 12, int64_t abstract_ste
       const int32_t c = order[static_cast<std::size_t>(k)];
       s.obstacles.push_back({c / s.map_size, c % s.map_size});
     }
-    s.rule = *rc::gen::element(RuleSet::thesis, RuleSet::deterministic, RuleSet::stochastic);
+    s.rule = *rc::gen::elementOf(all_rule_sets());
     s.mode = *rc::gen::element(Mode::abstract, Mode::cosim);
     s.seed = *rc::gen::arbitrary<uint64_t>();
     s.params.s_range = *rc::gen::inRange<int32_t>(1, 4);

@@ -7,7 +7,7 @@
 #include <functional>
 #include <nlohmann/json.hpp>
 
-#include "impl/mission/load.hpp"
+#include "swarmcheck/mission.hpp"
 #include "spec/util/input_error.hpp"
 
 namespace {
@@ -30,7 +30,7 @@ std::string message_for(const std::function<void(Json&)>& edit, const std::strin
     out << (raw.empty() ? j.dump(2) : raw);
   }
   try {
-    swarmcheck::impl::mission::load_mission((d / "m.json").string());
+    swarmcheck::mission::load_mission((d / "m.json").string());
   } catch (const swarmcheck::InputError& e) {
     const std::string s = e.what();
     return s.substr(s.find("m.json: ") == std::string::npos ? 0 : s.find("m.json: ") + 8);

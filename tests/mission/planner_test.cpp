@@ -2,15 +2,17 @@
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
+#include <memory>
+
+#include "conformance/mission/differential.hpp"
 #include "conformance/mission/generate.hpp"
-#include "impl/mission/load.hpp"
 #include "impl/mission/planner.hpp"
-#include "model/mission/brute_force.hpp"
 #include "model/mission/thesis_dijkstra.hpp"
+#include "swarmcheck/mission.hpp"
 
 namespace {
 
-namespace sm = swarmcheck::spec::mission;
+namespace sm = swarmcheck::mission;
 using swarmcheck::impl::mission::Planner;
 const std::string kMission = SWARMCHECK_SCENARIOS "/thesis/thesis-mission.json";
 
@@ -25,17 +27,12 @@ RC_GTEST_PROP(MissionPlanner, ExactPlanIsNeverWorseThanTheThesisBaseline, ()) {
   if (exact.found) RC_ASSERT(!sm::better(base.cost, exact.cost));
 }
 
+// The differential runner (conformance/mission/differential): exact vs brute force, cost bit for
+// bit, and the exact plan is a path with the cost it states.
 RC_GTEST_PROP(MissionPlanner, ExactPlanCostEqualsBruteForceOnSmallInstances, ()) {
   const auto m = *swarmcheck::conformance::mission::random_small_mission();
-  Planner planner(m);
-  const auto q = sm::initial_query(m);
-  const auto exact = planner.plan(q);
-  const auto brute = swarmcheck::model::mission::brute_force_plan(m, q);
-  RC_ASSERT(exact.found == brute.found);
-  if (exact.found) {
-    RC_ASSERT(exact.cost.makespan == brute.cost.makespan);  // bit for bit
-    RC_ASSERT(exact.cost.total == brute.cost.total);
-  }
+  if (const auto d = swarmcheck::conformance::mission::diff_plan(m, sm::initial_query(m)))
+    RC_FAIL(*d);
 }
 
 RC_GTEST_PROP(MissionPlanner, EveryPlanIsAnFsmPathEndingInAMarkedStateWithItsStatedCost, ()) {
@@ -58,10 +55,8 @@ RC_GTEST_PROP(MissionPlanner, ReplanningFromAnyStateWithMovedRobotsIsExactAndCac
   q.from = *rc::gen::elementOf(m.fsm.states);
   for (auto& p : q.positions) p = {double(*rc::gen::inRange(-5, 6)), double(*rc::gen::inRange(-5, 6))};
   for (auto& t : q.travel) t = double(*rc::gen::inRange(0, 20));
+  if (const auto d = swarmcheck::conformance::mission::diff_plan(m, q)) RC_FAIL(*d);
   const auto exact = planner.plan(q);
-  const auto brute = swarmcheck::model::mission::brute_force_plan(m, q);
-  RC_ASSERT(exact.found == brute.found);
-  if (exact.found) RC_ASSERT(exact.cost == brute.cost);
   const auto hits = planner.cache_hits();
   const auto again = planner.plan(q);
   RC_ASSERT(planner.cache_hits() == hits + 1);
@@ -75,7 +70,7 @@ std::vector<std::string> task_names(const sm::Mission& m, const std::vector<std:
 }
 
 TEST(MissionPlanner, ThesisMissionExactPlanIsTheThesisAnswer) {
-  const auto m = swarmcheck::impl::mission::load_mission(kMission);
+  const auto m = sm::load_mission(kMission);
   Planner planner(m);
   const auto p = planner.plan(sm::initial_query(m));
   ASSERT_TRUE(p.found);
@@ -87,8 +82,25 @@ TEST(MissionPlanner, ThesisMissionExactPlanIsTheThesisAnswer) {
   EXPECT_EQ(p.final_state, "s134:146:143");
 }
 
+// The public Planner keeps its own copy of the mission: it outlives the value it was given and
+// moves, and plans as the library's planner does.
+TEST(MissionPlanner, PublicPlannerOwnsItsMissionAndPlansAsTheLibrary) {
+  auto m = std::make_unique<sm::Mission>(sm::load_mission(kMission));
+  Planner internal(*m);
+  const auto expected = internal.plan(sm::initial_query(*m));
+  const sm::PlanQuery q = sm::initial_query(*m);
+  sm::Planner moved(*m);
+  m.reset();
+  sm::Planner planner = std::move(moved);
+  const auto p = planner.plan(q);
+  EXPECT_EQ(p.events, expected.events);
+  EXPECT_EQ(p.cost, expected.cost);
+  EXPECT_EQ(planner.plan(q).events, p.events);
+  EXPECT_EQ(planner.cache_hits(), 1u);
+}
+
 TEST(MissionPlanner, ThesisBaselineFindsTheSameAssignmentOnTheThesisMission) {
-  const auto m = swarmcheck::impl::mission::load_mission(kMission);
+  const auto m = sm::load_mission(kMission);
   const auto p = swarmcheck::model::mission::thesis_plan(m, sm::initial_query(m));
   ASSERT_TRUE(p.found);
   const auto seq = sm::task_sequences(m, p.events);

@@ -3,17 +3,20 @@
 // fired its event in that step; no robot entered a region whose event was not enabled).
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
 #include <sstream>
 
-#include "impl/mission/load.hpp"
-#include "impl/mission/run.hpp"
 #include "impl/mission/trace.hpp"
+#include "swarmcheck/mission.hpp"
 #include "spec/mission/avoidance.hpp"
 #include "spec/mission/plan.hpp"
 
 namespace {
 
-namespace sm = swarmcheck::spec::mission;
+namespace sm = swarmcheck::mission;
 namespace im = swarmcheck::impl::mission;
 const std::string kMission = SWARMCHECK_SCENARIOS "/thesis/thesis-mission.json";
 
@@ -21,10 +24,10 @@ const std::string kMission = SWARMCHECK_SCENARIOS "/thesis/thesis-mission.json";
 std::string replay(const sm::Mission& m, const im::MissionTrace& t) {
   std::string state = t.initial_state;
   std::vector<std::string> fired;  // events since the previous step record
-  const im::StepRecord* prev = nullptr;
+  const sm::StepRecord* prev = nullptr;
   for (const auto& e : t.entries) {
     if (e.is_event) {
-      const auto next = swarmcheck::spec::supervisor::successor(m.fsm, state, e.event.event);
+      const auto next = swarmcheck::supervisor::successor(m.fsm, state, e.event.event);
       if (!next) return "event " + e.event.event + " fired in state " + state + ", where it is not enabled";
       if (*next != e.event.state_after) return "event " + e.event.event + " recorded a wrong state";
       state = *next;
@@ -48,13 +51,13 @@ std::string replay(const sm::Mission& m, const im::MissionTrace& t) {
   return sm::is_marked(m, state) ? "" : "the trace does not end at a marked state";
 }
 
-void run_and_replay(im::BodyModel body) {
-  const auto m = im::load_mission(kMission);
-  im::RunOptions o;
+void run_and_replay(sm::BodyModel body) {
+  const auto m = sm::load_mission(kMission);
+  sm::RunOptions o;
   o.body = body;
   std::stringstream trace;
   im::TraceWriter writer(trace, m, o);
-  const auto r = im::run_mission(m, o, &writer);
+  const auto r = sm::run_mission(m, o, &writer);
   ASSERT_TRUE(r.completed) << r.reason;
   EXPECT_EQ(r.final_state, "s134:146:143");
   EXPECT_EQ(r.reason, "mission complete");
@@ -68,29 +71,57 @@ void run_and_replay(im::BodyModel body) {
 }
 
 TEST(MissionRun, ThesisMissionCompletesWithUnicycleBodiesAndItsTraceReplays) {
-  run_and_replay(im::BodyModel::unicycle);
+  run_and_replay(sm::BodyModel::unicycle);
 }
 
 TEST(MissionRun, ThesisMissionCompletesWithKinematicBodiesAndItsTraceReplays) {
-  run_and_replay(im::BodyModel::kinematic);
+  run_and_replay(sm::BodyModel::kinematic);
 }
 
 TEST(MissionRun, ReplayCatchesAnEventThatWasNotEnabled) {
-  const auto m = im::load_mission(kMission);
+  const auto m = sm::load_mission(kMission);
   im::MissionTrace t;
   t.initial_state = "s1";
   im::TraceEntry e;
   e.is_event = true;
-  e.event = im::EventRecord{0.0, "a3s", "A", true, "s9"};
+  e.event = sm::EventRecord{0.0, "a3s", "A", true, "s9"};
   t.entries.push_back(e);
   EXPECT_EQ(replay(m, t), "event a3s fired in state s1, where it is not enabled");
 }
 
+// The public trace file: nothing at the path until commit(), then exactly the writer's records;
+// dropped without commit(), it leaves no file (not even a temporary one) behind.
+TEST(MissionRun, TraceFileAppearsWholeOnCommitOnly) {
+  const auto m = sm::load_mission(kMission);
+  sm::RunOptions o;
+  o.body = sm::BodyModel::kinematic;
+  const auto dir = std::filesystem::temp_directory_path() /
+                   ("swarmcheck_trace_file_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  const std::string path = (dir / "t.jsonl").string();
+  {
+    sm::TraceFile dropped(path, m, o);
+    sm::run_mission(m, o, &dropped);
+  }
+  EXPECT_TRUE(std::filesystem::is_empty(dir));
+  sm::TraceFile trace(path, m, o);
+  const auto r = sm::run_mission(m, o, &trace);
+  EXPECT_FALSE(std::filesystem::exists(path));
+  trace.commit();
+  std::ifstream in(path);
+  const auto t = im::read_trace(in, path);
+  std::size_t events = 0;
+  for (const auto& e : t.entries) events += e.is_event ? 1 : 0;
+  EXPECT_EQ(events, r.events.size());
+  EXPECT_EQ(replay(m, t), "");
+  std::filesystem::remove_all(dir);
+}
+
 TEST(MissionRun, TimeLimitIsReported) {
-  const auto m = im::load_mission(kMission);
-  im::RunOptions o;
+  const auto m = sm::load_mission(kMission);
+  sm::RunOptions o;
   o.max_time_s = 1.0;
-  const auto r = im::run_mission(m, o);
+  const auto r = sm::run_mission(m, o);
   EXPECT_FALSE(r.completed);
   EXPECT_EQ(r.reason, "time limit of 1 s reached");
 }

@@ -1,6 +1,6 @@
 // occupancy on concrete runs: random model steps of the fixed rule sets keep every robot in
 // the map, off obstacles and alone in its cell; and the proof's symbolic deterministic choice
-// picks the cell the spec's choose_deterministic picks.
+// picks the cell the spec's deterministic choice picks.
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
@@ -19,7 +19,7 @@ using namespace exploration;
 RC_GTEST_PROP(OccupancyProof, RandomModelStepsOfTheFixedRuleSetsKeepRobotsApartAndOffObstacles, ()) {
   Scenario s = *testing::gen_scenario(8, 30, 200);
   s.rule = *rc::gen::element(RuleSet::deterministic, RuleSet::stochastic);
-  model::ExplorationModel m(s);
+  swarmcheck::model::exploration::ExplorationModel m(s);
   while (!m.done()) {
     m.step();
     const StepRecord r = m.record();
@@ -47,7 +47,7 @@ RC_GTEST_PROP(OccupancyProof, SymbolicDeterministicChoiceIsTheSpecsChoice, ()) {
     spec_cands.push_back(Candidate{CellIndex{k / 3, k % 3}, static_cast<double>(tau[u]), blocked[u]});
     slot_of.push_back(k);
   }
-  const Choice ch = choose_deterministic(spec_cands, p);
+  const Choice ch = choose(rules_of(RuleSet::deterministic), choice_terms(p), spec_cands, DrawSite{0, 0, 0});
   const int expected = ch.target < 0 ? -1 : slot_of[static_cast<std::size_t>(ch.target)];
   const z3::expr got = occupancy::deterministic_target(c, sym).simplify();
   RC_ASSERT(got.get_numeral_int() == expected);

@@ -87,6 +87,26 @@ TEST(FsmCli, ExportToDotAndJson) {
   EXPECT_EQ(nlohmann::json::parse(json.out)["states"].size(), 72u);
 }
 
+TEST(FsmCli, CompareGivesTheShortestWitnessesOnBothEnginesAndExitsOneWhenNotEqual) {
+  const std::vector<std::string> args{"fsm", "compare", kThesis + "/supervisor_any_robot.fsm",
+                                      kThesis + "/control2.fsm", "--json"};
+  const CliRun r = run_cli(args);
+  ASSERT_EQ(r.status, 1) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["a_in_b"]["closed_witness"],
+            nlohmann::json({"a5e", "b8e", "a3s", "a6e", "a3f", "a4s", "a4f"}));
+  EXPECT_EQ(j["b_in_a"]["closed_witness"],
+            nlohmann::json({"a5e", "b8e", "a3s", "a6e", "a3f", "a4s", "a5e"}));
+  auto with_model = args;
+  with_model.insert(with_model.end(), {"--engine", "model"});
+  EXPECT_EQ(run_cli(with_model).out, r.out);
+}
+
+TEST(FsmCli, CompareOfAFileWithItselfIsEqual) {
+  const CliRun r = run_cli({"fsm", "compare", kThesis + "/control2.fsm", kThesis + "/control2.fsm"});
+  EXPECT_EQ(r.status, 0) << r.err;
+}
+
 TEST(FsmCli, UnknownFormatIsAUsageError) {
   const CliRun r = run_cli({"fsm", "export", kThesis + "/control2.fsm", "--to", "png"});
   EXPECT_EQ(r.status, 2);

@@ -1,11 +1,13 @@
-// The conformance campaign: impl/supervisor against model/supervisor on random deterministic
-// automata, every operation. A failure shrinks to a minimal automaton (or pair) and writes it as
-// .fsm files into $SWARMCHECK_CEX_DIR (default: ./supervisor-counterexamples).
+// The conformance campaign of the automata operations: impl/supervisor against model/supervisor
+// on generated automata, every operation, seeded (conformance/supervisor/campaign.hpp); the
+// exact comparison; and the canary that shows the harness can fail.
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
+#include <unistd.h>
 
-#include <cstdlib>
+#include <filesystem>
 
+#include "conformance/supervisor/campaign.hpp"
 #include "conformance/supervisor/differential.hpp"
 #include "conformance/supervisor/generators.hpp"
 #include "impl/supervisor/fsm_io.hpp"
@@ -18,53 +20,32 @@ using namespace swarmcheck::conformance::supervisor;
 namespace impl = swarmcheck::impl::supervisor;
 namespace model = swarmcheck::model::supervisor;
 
-// The campaign's size: 1000 cases per property (a second or two in all) unless the caller sets
-// RC_PARAMS (seed=..., reproduce=..., max_success=...). Set before main, so before RapidCheck
-// reads its configuration.
-const bool kCampaignSize = [] { return ::setenv("RC_PARAMS", "max_success=1000", 0) == 0; }();
-
-std::string cex_dir() {
-  const char* d = std::getenv("SWARMCHECK_CEX_DIR");
-  return d ? d : "supervisor-counterexamples";
+// The default budget and seed, as `swarmcheck conform` runs them: the same cases on every run.
+TEST(SupervisorConformance, ImplEqualsModelExactlyOnEveryOperationOfTheSeededCampaign) {
+  CampaignOptions o;
+  o.out_dir = (std::filesystem::temp_directory_path() / ("swarmcheck-automata-" + std::to_string(::getpid()))).string();
+  const CampaignReport r = run_campaign(o);
+  ASSERT_FALSE(r.counterexample.has_value()) << r.counterexample->difference << "\n" << r.counterexample->command;
+  EXPECT_EQ(r.cases_run, o.cases);
+  for (const char* kind : {"unary", "product", "big", "synthesis", "big_synth", "inclusion", "roundtrip"})
+    EXPECT_GT(r.coverage.cases_by_kind.count(kind), 0u) << kind;
+  EXPECT_GE(r.coverage.largest_product_states, 1000u);   // the growth paths ran
+  EXPECT_GT(r.coverage.inclusions_failing, 0);           // witnesses were compared
+  std::filesystem::remove_all(o.out_dir);
 }
 
-// Fails the property with the difference and where the (so far smallest) automata were written.
-void fail_with(const std::string& stem, const std::vector<Automaton>& automata,
-               const std::string& difference) {
-  const auto paths = write_counterexample(cex_dir(), stem, automata);
-  std::string where;
-  for (const auto& p : paths) where += " " + p;
-  RC_FAIL(difference + "\ncounterexample written to:" + where);
-}
-
-// Sizes: unary operations on up to 300 states; products of two 40-state automata; synthesis for
-// 100-state plants and 30-state specs, made dense and well marked so that most supervisors are
-// not empty. The model's string-keyed passes make bigger pairs slow, not more telling.
-RC_GTEST_PROP(SupervisorConformance, ImplEqualsModelOnAccessibleCoaccessibleTrimNonblocking, ()) {
-  const Alphabet alphabet = *gen_alphabet();
-  const Automaton a = *gen_automaton(alphabet, {300, 40, 20});
-  if (const auto d = diff_unary(a)) fail_with("unary", {a}, *d);
-}
-
-RC_GTEST_PROP(SupervisorConformance, ImplEqualsModelOnSynchronousProduct, ()) {
-  const Alphabet alphabet = *gen_alphabet();
-  const Automaton a = *gen_automaton(alphabet, {40, 60, 30});
-  const Automaton b = *gen_automaton(alphabet, {40, 60, 30});
-  if (const auto d = diff_product(a, b)) fail_with("product", {a, b}, *d);
-}
-
-RC_GTEST_PROP(SupervisorConformance, ImplEqualsModelOnControllabilityAndSupervisor, ()) {
-  const Alphabet alphabet = *gen_alphabet();
-  const Automaton plant = *gen_automaton(alphabet, {100, 70, 70});
-  const Automaton spec = *gen_automaton(alphabet, {30, 95, 70});
-  RC_CLASSIFY(model::supcon(plant, spec).states.empty(), "empty supervisor");
-  if (const auto d = diff_synthesis(plant, spec)) fail_with("synthesis", {plant, spec}, *d);
-}
-
-RC_GTEST_PROP(SupervisorConformance, WritingThenReadingAnAutomatonGivesItBack, ()) {
-  const Alphabet alphabet = *gen_alphabet();
-  const Automaton a = *gen_automaton(alphabet, {100, 60, 30});
-  RC_ASSERT(impl::read_fsm(impl::write_fsm(a), "roundtrip") == a);
+// A library that gave two states one name would agree with the model up to renaming (and a
+// name-keyed copy would merge them); the exact comparison must call it a difference.
+TEST(SupervisorConformance, ADuplicateStateNameIsADifference) {
+  Automaton a;
+  a.states = {"x", "y"};
+  a.events["e"] = swarmcheck::supervisor::EventAttr{true, true};
+  a.delta["x"]["e"] = "y";
+  impl::Fsm f = impl::compile(a);
+  f.state_names[1] = "x";
+  const auto d = diff_exact("test", f, a);
+  ASSERT_TRUE(d.has_value());
+  EXPECT_NE(d->find("duplicate"), std::string::npos) << *d;
 }
 
 // The canary: a deliberately wrong supervisor (forgets uncontrollability: trim of the product)

@@ -11,7 +11,7 @@ using swarmcheck::InputError;
 using swarmcheck::impl::supervisor::read_fsm;
 using swarmcheck::impl::supervisor::read_fsm_file;
 using swarmcheck::impl::supervisor::write_fsm;
-using swarmcheck::spec::supervisor::Automaton;
+using swarmcheck::supervisor::Automaton;
 
 std::string error_of(const std::string& text) {
   try {

@@ -12,6 +12,7 @@
 namespace {
 
 using namespace swarmcheck::model::supervisor;
+namespace model = swarmcheck::model::supervisor;
 using swarmcheck::conformance::supervisor::Alphabet;
 using swarmcheck::conformance::supervisor::gen_alphabet;
 using swarmcheck::conformance::supervisor::gen_automaton;
@@ -24,40 +25,40 @@ const char* kMachine2 = "2\nI2 1 1\na2 W2 c o\nW2 0 1\nb2 I2 uc o\n";
 const char* kBuffer = "2\nB0 1 1\nb1 B1 uc o\nB1 0 1\na2 B0 c o\n";
 
 TEST(SupervisorModel, SmallFactorySupervisorKeepsSixStates) {
-  const Automaton plant = product({read_fsm(kMachine1, "m1"), read_fsm(kMachine2, "m2")},
+  const Automaton plant = model::product({read_fsm(kMachine1, "m1"), read_fsm(kMachine2, "m2")},
                                   {"m1", "m2"});
   const Automaton spec = read_fsm(kBuffer, "buffer");
   EXPECT_EQ(plant.states.size(), 4u);
-  EXPECT_FALSE(is_controllable(plant, spec));  // starting M1 with a full buffer overflows it
-  const Automaton sup = supcon(plant, spec);
+  EXPECT_FALSE(model::is_controllable(plant, spec));  // starting M1 with a full buffer overflows it
+  const Automaton sup = model::supcon(plant, spec);
   EXPECT_EQ(sup.states.size(), 6u);
   EXPECT_EQ(sup.states.front(), "I1.I2.B0");
   EXPECT_EQ(sup.delta.at("I1.I2.B1").count("a1"), 0u);  // a1 disabled while the buffer is full
-  EXPECT_TRUE(is_controllable(plant, sup));
-  EXPECT_TRUE(is_nonblocking(sup));
+  EXPECT_TRUE(model::is_controllable(plant, sup));
+  EXPECT_TRUE(model::is_nonblocking(sup));
 }
 
 TEST(SupervisorModel, BlockingAndUnreachableStates) {
   const Automaton a = read_fsm("4\ns 0 2\na m\nb d\nm 1 0\nd 0 0\nu 0 1\na s\n", "t");
-  EXPECT_EQ(accessible_states(a), (StateSet{"s", "m", "d"}));
-  EXPECT_EQ(coaccessible_states(a), (StateSet{"s", "m", "u"}));
-  EXPECT_EQ(blocking_states(a), (std::vector<State>{"d"}));
-  EXPECT_EQ(trim(a).states, (std::vector<State>{"s", "m"}));
-  EXPECT_FALSE(is_nonblocking(a));
+  EXPECT_EQ(model::accessible_states(a), (StateSet{"s", "m", "d"}));
+  EXPECT_EQ(model::coaccessible_states(a), (StateSet{"s", "m", "u"}));
+  EXPECT_EQ(model::blocking_states(a), (std::vector<State>{"d"}));
+  EXPECT_EQ(model::trim(a).states, (std::vector<State>{"s", "m"}));
+  EXPECT_FALSE(model::is_nonblocking(a));
 }
 
 TEST(SupervisorModel, EmptySupervisorWhenUncontrollableEventLeadsToBlocking) {
   // The plant can always do u (uncontrollable) into a dead end the spec forbids.
   const Automaton plant = read_fsm("2\np 1 1\nu q uc o\nq 0 0\n", "plant");
   const Automaton spec = read_fsm("1\ns 1 0\nEVENTS\nu uc o\n", "spec");
-  EXPECT_TRUE(supcon(plant, spec).states.empty());
+  EXPECT_TRUE(model::supcon(plant, spec).states.empty());
 }
 
 TEST(SupervisorModel, AttributeConflictInProductIsAnInputError) {
   const Automaton a = read_fsm("1\nx 1 1\ne x c o\n", "a.fsm");
   const Automaton b = read_fsm("1\ny 1 1\ne y uc o\n", "b.fsm");
   try {
-    product({a, b}, {"a.fsm", "b.fsm"});
+    model::product({a, b}, {"a.fsm", "b.fsm"});
     FAIL() << "no error";
   } catch (const swarmcheck::InputError& e) {
     EXPECT_STREQ(e.what(),
@@ -69,11 +70,11 @@ TEST(SupervisorModel, AttributeConflictInProductIsAnInputError) {
 TEST(SupervisorModel, LanguageInclusionWitnesses) {
   const Automaton ab = read_fsm("3\n0 0 1\na 1\n1 0 1\nb 2\n2 1 0\n", "ab");
   const Automaton a_only = read_fsm("2\n0 0 1\na 1\n1 1 0\n", "a");
-  const Inclusion i = language_inclusion(ab, a_only);
+  const Inclusion i = model::language_inclusion(ab, a_only);
   EXPECT_FALSE(i.closed);
   EXPECT_EQ(i.closed_witness, (std::vector<Event>{"a", "b"}));
   EXPECT_FALSE(i.marked);
-  const Inclusion j = language_inclusion(a_only, ab);
+  const Inclusion j = model::language_inclusion(a_only, ab);
   EXPECT_TRUE(j.closed);
   EXPECT_FALSE(j.marked);
   EXPECT_EQ(j.marked_witness, (std::vector<Event>{"a"}));
@@ -83,11 +84,11 @@ RC_GTEST_PROP(SupervisorModel, SupervisorIsControllableNonblockingAndInsideTheSp
   const Alphabet alphabet = *gen_alphabet();
   const Automaton plant = *gen_automaton(alphabet, {20, 70, 30});
   const Automaton spec = *gen_automaton(alphabet, {10, 90, 50});
-  const Automaton sup = supcon(plant, spec);
-  RC_ASSERT(is_nonblocking(sup));
-  RC_ASSERT(is_controllable(plant, sup));
-  const Automaton both = product({plant, spec}, {"plant", "spec"});
-  const Inclusion in = language_inclusion(sup, both);
+  const Automaton sup = model::supcon(plant, spec);
+  RC_ASSERT(model::is_nonblocking(sup));
+  RC_ASSERT(model::is_controllable(plant, sup));
+  const Automaton both = model::product({plant, spec}, {"plant", "spec"});
+  const Inclusion in = model::language_inclusion(sup, both);
   RC_ASSERT(in.closed);
   RC_ASSERT(in.marked);
 }
@@ -99,7 +100,7 @@ RC_GTEST_PROP(SupervisorModel, ProductLanguageIsTheIntersectionOnASharedAlphabet
   b.events = a.events;  // same alphabet: || is intersection of languages
   for (auto& [q, row] : b.delta)
     for (auto it = row.begin(); it != row.end();) it = a.events.count(it->first) ? ++it : row.erase(it);
-  const Automaton p = product({a, b}, {"a", "b"});
+  const Automaton p = model::product({a, b}, {"a", "b"});
   const auto word = *rc::gen::container<std::vector<std::string>>(
       rc::gen::elementOf(std::vector<std::string>{"e0", "e1", "e2", "e3"}));
   RC_ASSERT(in_closed_language(p, word) ==

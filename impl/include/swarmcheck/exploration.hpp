@@ -3,7 +3,7 @@
 //
 //   #include <swarmcheck/exploration.hpp>
 //   swarmcheck::exploration::Scenario s = swarmcheck::exploration::default_scenario();
-//   swarmcheck::Exploration run(s);          // validates s; throws swarmcheck::InputError
+//   swarmcheck::exploration::Exploration run(s);          // validates s; throws swarmcheck::InputError
 //   while (!run.done()) run.step();
 //   std::printf("eP %.1f %% after %lld steps\n", run.eP(), (long long)run.steps());
 //
@@ -15,12 +15,13 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <span>
 
 #include "spec/exploration/scenario.hpp"
 #include "spec/exploration/types.hpp"
 #include "spec/util/input_error.hpp"
 
-namespace swarmcheck {
+namespace swarmcheck::exploration {
 
 struct ExplorationOptions {
   // Planning steps with at least this many robots decide in parallel (oneTBB), grouped so that
@@ -32,8 +33,8 @@ struct ExplorationOptions {
 
 class Exploration {
  public:
-  explicit Exploration(const exploration::Scenario& s, ExplorationOptions options = {},
-                       exploration::RobotParams robot = {});
+  explicit Exploration(const Scenario& s, ExplorationOptions options = {},
+                       RobotParams robot = {});
   ~Exploration();
   Exploration(Exploration&&) noexcept;
   Exploration& operator=(Exploration&&) noexcept;
@@ -52,14 +53,25 @@ class Exploration {
   std::optional<int64_t> completion_step() const;
 
   // The observable state (one trace record). O(cells) for the pheromone digest.
-  exploration::StepRecord record() const;
+  StepRecord record() const;
+  // Each robot's pose (metres, radians), and the cell the Environment last moved it to with the
+  // waypoint it issued, by robot index: O(1), for callers that follow robots every step
+  // (record() is O(cells)).
+  std::span<const BodyState> bodies() const;
+  std::span<const EnvRobot> robots() const;
   // One cell, with its pheromone value current at steps().
-  exploration::Cell cell(exploration::CellIndex c) const;
-  const exploration::Scenario& scenario() const;
+  Cell cell(CellIndex c) const;
+  const Scenario& scenario() const;
 
  private:
   struct State;
   std::unique_ptr<State> state_;
 };
 
+}  // namespace swarmcheck::exploration
+
+namespace swarmcheck {
+// The names of the first release, kept for existing callers.
+using exploration::Exploration;
+using exploration::ExplorationOptions;
 }  // namespace swarmcheck

@@ -1,0 +1,38 @@
+#pragma once
+// The two engines of system A behind one interface: the reference model (the oracle) and the
+// library users link. The command line (`run --engine`, `replay --against`) chooses between them
+// here, so that only the harness ever reaches into model/.
+#include <cstdint>
+#include <memory>
+#include <optional>
+
+#include "spec/exploration/types.hpp"
+#include "swarmcheck/exploration.hpp"
+
+namespace swarmcheck::conformance::exploration {
+
+enum class Engine { model, impl };
+
+class Simulation {
+ public:
+  virtual ~Simulation() = default;
+  virtual void step() = 0;
+  virtual bool done() const = 0;
+  virtual int64_t steps() const = 0;
+  virtual int64_t planning_steps() const = 0;
+  virtual int64_t visited() const = 0;
+  virtual int64_t free_cells() const = 0;
+  virtual double eP() const = 0;
+  virtual double sTime() const = 0;
+  virtual std::optional<int64_t> completion_step() const = 0;
+  virtual swarmcheck::exploration::StepRecord record() const = 0;
+  virtual const swarmcheck::exploration::Scenario& scenario() const = 0;
+  // One cell, its pheromone current at steps() (for the trace's field records).
+  virtual swarmcheck::exploration::Cell cell(swarmcheck::exploration::CellIndex c) const = 0;
+};
+
+// `s` must be valid; `options` only matter to the impl.
+std::unique_ptr<Simulation> make_simulation(Engine engine, const swarmcheck::exploration::Scenario& s,
+                                            const swarmcheck::exploration::ExplorationOptions& options = {});
+
+}  // namespace swarmcheck::conformance::exploration

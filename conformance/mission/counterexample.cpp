@@ -1,0 +1,65 @@
+#include "conformance/mission/counterexample.hpp"
+
+#include <fmt/format.h>
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+
+#include "impl/io/atomic_file.hpp"
+#include "spec/util/hana_json.hpp"
+#include "swarmcheck/supervisor.hpp"
+
+namespace swarmcheck::conformance::mission {
+
+namespace {
+
+namespace sm = swarmcheck::mission;
+using Json = nlohmann::ordered_json;
+
+Json meanings(const sm::Mission& m) {
+  Json events = Json::object();
+  for (const auto& [name, mn] : m.events) {
+    Json j = {{"robot", m.robots[mn.robot].name}};
+    if (mn.kind == sm::MeaningKind::task_start)
+      j["task"] = m.tasks[mn.target].name;
+    else
+      j["region"] = m.regions[mn.target].name;
+    events[name] = j;
+  }
+  return events;
+}
+
+}  // namespace
+
+std::string mission_json(const sm::Mission& m, const std::string& fsm_file, const std::string& about) {
+  Json robots = Json::array(), tasks = Json::array(), regions = Json::array();
+  for (const auto& r : m.robots) robots.push_back({{"name", r.name}, {"start", r.start}});
+  for (const auto& t : m.tasks) tasks.push_back({{"name", t.name}, {"at", t.at}});
+  for (const auto& g : m.regions)
+    regions.push_back({{"name", g.name}, {"corners", Json::array({g.lo, g.hi})}});
+  const Json j = {{"about", about},           {"fsm", fsm_file},
+                  {"initial_state", m.initial_state}, {"marked_states", m.marked_states},
+                  {"robots", robots},         {"tasks", tasks},
+                  {"regions", regions},       {"events", meanings(m)}};
+  return j.dump(2) + "\n";  // doubles in the shortest form that reads back to the same bits
+}
+
+Counterexample write_counterexample(const std::string& dir, const std::string& stem,
+                                    const sm::Mission& m, const sm::RunOptions& o,
+                                    const std::string& difference) {
+  std::filesystem::create_directories(dir);
+  Counterexample c;
+  c.mission_path = dir + "/" + stem + ".json";
+  c.fsm_path = dir + "/" + stem + ".fsm";
+  // fmt's {} prints a double in the shortest form that reads back to the same bits.
+  c.command = fmt::format("swarmcheck mission run {} --body {} --dt {} --max-time {} --speed {}",
+                          c.mission_path, json_io::enum_to_string(o.body), o.dt_s, o.max_time_s,
+                          o.speed_m_per_s);
+  const std::string about = "counterexample of the mission harness; replay: " + c.command +
+                            "; first difference: " + difference;
+  swarmcheck::supervisor::write_fsm_file(c.fsm_path, m.fsm);
+  impl::io::write_file_atomically(c.mission_path, mission_json(m, stem + ".fsm", about));
+  return c;
+}
+
+}  // namespace swarmcheck::conformance::mission

@@ -1,0 +1,76 @@
+#include "conformance/mission/differential.hpp"
+
+#include <bit>
+#include <cstdint>
+
+#include <boost/hana.hpp>
+
+#include "model/mission/brute_force.hpp"
+#include "model/mission/run_model.hpp"
+#include "spec/util/hana_diff.hpp"
+#include "swarmcheck/mission.hpp"
+
+namespace swarmcheck::conformance::mission {
+
+namespace {
+
+namespace sm = swarmcheck::mission;
+
+// Everything a run shows: its result and every record its observer saw, in order.
+struct Observed {
+  BOOST_HANA_DEFINE_STRUCT(Observed,
+      (sm::RunResult, result),
+      (std::vector<sm::EventRecord>, events),
+      (std::vector<sm::StepRecord>, steps));
+};
+
+class Recorder final : public sm::RunObserver {
+ public:
+  explicit Recorder(Observed& out) : out_(out) {}
+  void on_event(const sm::EventRecord& e) override { out_.events.push_back(e); }
+  void on_step(const sm::StepRecord& s) override { out_.steps.push_back(s); }
+
+ private:
+  Observed& out_;
+};
+
+std::string cost_text(const sm::Plan& p) {
+  return p.found ? json_io::value_text(p.cost.makespan) + " / " + json_io::value_text(p.cost.total)
+                 : "no plan";
+}
+
+}  // namespace
+
+std::optional<std::string> diff_run(const sm::Mission& m, const sm::RunOptions& o,
+                                    const PlanFunction& model_plan) {
+  Observed lib, model;
+  Recorder lib_recorder(lib), model_recorder(model);
+  lib.result = sm::run_mission(m, o, &lib_recorder);
+  sm::Planner planner(m);
+  const PlanFunction exact = [&](const sm::PlanQuery& q) { return planner.plan(q); };
+  model.result = swarmcheck::model::mission::run_model(m, o, model_plan ? model_plan : exact,
+                                                       &model_recorder);
+  const auto d = json_io::first_difference(lib, model);
+  if (!d) return std::nullopt;
+  return d->path + ": impl " + d->a + ", model " + d->b;
+}
+
+std::optional<std::string> diff_plan(const sm::Mission& m, const sm::PlanQuery& q) {
+  const sm::Plan exact = sm::Planner(m).plan(q);
+  const sm::Plan brute = swarmcheck::model::mission::brute_force_plan(m, q);
+  // The objective is (makespan, total), compared by bits. Among plans of equal objective the
+  // per-robot travel may differ (two robots swapping tasks): each planner's own order decides
+  // (spec/mission/plan.hpp), and the stream kind compares whole plans of one planner.
+  const auto same_bits = [](double a, double b) { return std::bit_cast<std::uint64_t>(a) == std::bit_cast<std::uint64_t>(b); };
+  if (exact.found != brute.found ||
+      (exact.found && !(same_bits(exact.cost.makespan, brute.cost.makespan) && same_bits(exact.cost.total, brute.cost.total))))
+    return "plan cost (makespan / total): impl " + cost_text(exact) + ", model " + cost_text(brute);
+  if (!exact.found) return std::nullopt;
+  const sm::PathEvaluation ev = sm::evaluate_path(m, q, exact.events);
+  if (!ev.error.empty()) return "the exact plan is not a plan: " + ev.error;
+  if (ev.final_state != exact.final_state || !(ev.cost == exact.cost))
+    return "the exact plan states another cost or final state than its path has";
+  return std::nullopt;
+}
+
+}  // namespace swarmcheck::conformance::mission

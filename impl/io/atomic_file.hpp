@@ -1,0 +1,43 @@
+#pragma once
+// The one way swarmcheck writes an output file: the content goes to a temporary file in the
+// target's own folder (so the rename cannot cross file systems), is flushed and fsync'ed, and is
+// renamed onto the target only on commit(). Until then the target keeps its old content; an
+// error or an exception removes the temporary file, so a failed command leaves nothing
+// half-written behind. Failures are InputError naming the path.
+//
+//   AtomicFile out("trace.jsonl");
+//   out.stream() << ...;
+//   out.commit();                       // or: write_file_atomically(path, text)
+#include <fstream>
+#include <string>
+
+namespace swarmcheck::impl::io {
+
+class AtomicFile {
+ public:
+  explicit AtomicFile(std::string path);
+  AtomicFile(const AtomicFile&) = delete;
+  AtomicFile& operator=(const AtomicFile&) = delete;
+  ~AtomicFile();   // without commit(): the temporary file is removed, the target untouched
+
+  std::ofstream& stream() { return out_; }
+  const std::string& path() const { return path_; }
+  const std::string& temp_path() const { return temp_; }
+  void commit();
+
+ private:
+  std::string path_;
+  std::string temp_;
+  std::ofstream out_;
+  bool committed_ = false;
+};
+
+// The whole content at once, atomically.
+void write_file_atomically(const std::string& path, const std::string& content);
+
+}  // namespace swarmcheck::impl::io
+
+namespace swarmcheck {
+// The namespace's first name, for callers outside system B's folders that still write io::.
+namespace io = impl::io;
+}  // namespace swarmcheck

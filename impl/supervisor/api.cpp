@@ -1,0 +1,74 @@
+// The public API's operations on Automaton values (swarmcheck/supervisor.hpp): each compiles its
+// inputs to the CSR form, runs the fast operation (operations.hpp) and gives a value back; and
+// the atomic .fsm file writer. (The reader and writer of the text are fsm_read.cpp and
+// fsm_write.cpp, which the fuzz target builds alone.)
+#include <algorithm>
+
+#include "impl/io/atomic_file.hpp"
+#include "impl/supervisor/operations.hpp"
+#include "swarmcheck/supervisor.hpp"
+
+namespace swarmcheck::supervisor {
+
+namespace {
+
+namespace is = swarmcheck::impl::supervisor;
+
+std::vector<State> names_where(const is::Fsm& f, const std::vector<std::uint8_t>& mask,
+                               std::uint8_t value) {
+  std::vector<State> out;
+  for (is::StateId s = 0; s < f.state_count(); ++s)
+    if (mask[s] == value) out.push_back(f.state_names[s]);
+  return out;
+}
+
+}  // namespace
+
+void write_fsm_file(const std::string& path, const Automaton& a) {
+  impl::io::write_file_atomically(path, write_fsm(a));
+}
+
+CheckReport check(const Automaton& a) {
+  const is::Fsm f = is::compile(a);
+  CheckReport r;
+  r.unreachable_states = names_where(f, is::accessible_mask(f), 0);
+  for (const is::StateId s : is::blocking_states(f)) r.blocking_states.push_back(f.state_names[s]);
+  const auto coac = is::coaccessible_mask(f);
+  r.coaccessible = std::all_of(coac.begin(), coac.end(), [](std::uint8_t c) { return c != 0; });
+  return r;
+}
+
+bool is_nonblocking(const Automaton& a) { return is::is_nonblocking(is::compile(a)); }
+
+Automaton accessible_part(const Automaton& a) {
+  return is::decompile(is::accessible_part(is::compile(a)));
+}
+
+Automaton trim(const Automaton& a) { return is::decompile(is::trim(is::compile(a))); }
+
+Automaton product(const std::vector<Automaton>& parts, const std::vector<std::string>& names) {
+  if (parts.empty()) throw InputError("product", "expected at least one automaton");
+  std::vector<std::string> named = names;
+  for (std::size_t i = named.size(); i < parts.size(); ++i)
+    named.push_back("part " + std::to_string(i + 1));
+  std::vector<is::Fsm> compiled;
+  compiled.reserve(parts.size());
+  for (const auto& a : parts) compiled.push_back(is::compile(a));
+  std::vector<const is::Fsm*> ptrs;
+  for (const auto& f : compiled) ptrs.push_back(&f);
+  return is::decompile(is::product(ptrs, named));
+}
+
+bool is_controllable(const Automaton& plant, const Automaton& spec) {
+  return is::is_controllable(is::compile(plant), is::compile(spec));
+}
+
+Automaton supcon(const Automaton& plant, const Automaton& spec) {
+  return is::decompile(is::supcon(is::compile(plant), is::compile(spec)));
+}
+
+Inclusion language_inclusion(const Automaton& a, const Automaton& b) {
+  return is::language_inclusion(is::compile(a), is::compile(b));
+}
+
+}  // namespace swarmcheck::supervisor

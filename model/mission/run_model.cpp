@@ -1,0 +1,285 @@
+// The reference run: plain values and one function per rule of spec/mission/run.hpp.
+#include "model/mission/run_model.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <stdexcept>
+#include <bit>
+#include <cstdint>
+#include <set>
+#include <utility>
+
+#include "spec/exploration/body.hpp"
+#include "spec/exploration/controller.hpp"
+#include "spec/mission/avoidance.hpp"
+#include "spec/util/demand.hpp"
+
+namespace swarmcheck::model::mission {
+
+namespace {
+
+namespace sm = swarmcheck::mission;
+namespace ex = swarmcheck::exploration;
+
+struct Robot {
+  sm::Point pos{};
+  double theta_rad = 0.0;
+  ex::ControllerState controller = ex::initial_controller();
+  std::vector<std::size_t> tasks;   // queued, front first
+  bool on_leg = false;
+  sm::Point waypoint{};
+  bool waypoint_is_task = false;
+  bool sent = false;                // sent to a task at least once
+  std::size_t sent_to = 0;          // the task it was sent to last
+  double travelled_m = 0.0;
+  bool blocked = false;
+};
+
+// One robot's proposed step.
+struct Move {
+  sm::Point pos;
+  double theta_rad;
+  ex::ControllerState controller;
+  bool on_leg;
+  bool arrived;
+};
+
+using QueryKey = std::pair<std::string, std::vector<std::uint64_t>>;  // state, doubles' bits
+
+struct World {
+  const sm::Mission& m;
+  const sm::RunOptions& o;
+  const PlanFunction& plan;
+  sm::RunObserver* observer;
+  std::string q;
+  std::vector<Robot> robots;
+  sm::RunResult result;
+  std::set<QueryKey> remembered;    // for plan_cache_hits only
+};
+
+sm::PlanQuery query(const World& w) {
+  sm::PlanQuery out;
+  out.from = w.q;
+  for (const Robot& r : w.robots) {
+    out.positions.push_back(r.sent ? w.m.tasks[r.sent_to].at : r.pos);
+    double committed = 0.0;
+    sm::Point from = r.pos;
+    for (const std::size_t t : r.tasks) {
+      committed += sm::distance(from, w.m.tasks[t].at);
+      from = w.m.tasks[t].at;
+    }
+    out.travel.push_back(committed);
+  }
+  return out;
+}
+
+// Plans from the current query, counting it as a cache hit when it is remembered.
+sm::Plan ask(World& w) {
+  const sm::PlanQuery pq = query(w);
+  QueryKey key{pq.from, {}};
+  for (std::size_t r = 0; r < pq.positions.size(); ++r)
+    for (const double v : {pq.positions[r][0], pq.positions[r][1], pq.travel[r]})
+      key.second.push_back(std::bit_cast<std::uint64_t>(v));
+  if (w.remembered.count(key)) {
+    ++w.result.plan_cache_hits;
+  } else {
+    if (w.remembered.size() >= sm::kPlanMemory) w.remembered.clear();
+    w.remembered.insert(std::move(key));
+  }
+  return w.plan(pq);
+}
+
+void fire(World& w, const std::string& e, double t) {
+  const auto next = swarmcheck::supervisor::successor(w.m.fsm, w.q, e);
+  // The plan function is the caller's: an event it plans that q does not enable is its bug.
+  if (!next) throw std::logic_error("the planner's event " + e + " is not enabled in state " + w.q);
+  w.q = *next;
+  sm::EventRecord rec;
+  rec.time_s = t;
+  rec.event = e;
+  rec.robot = w.m.robots[w.m.events.at(e).robot].name;
+  rec.controllable = w.m.fsm.events.at(e).controllable;
+  rec.state_after = w.q;
+  if (w.observer) w.observer->on_event(rec);
+  w.result.events.push_back(rec);
+}
+
+void record_step(const World& w, double t) {
+  if (!w.observer) return;
+  sm::StepRecord s;
+  s.time_s = t;
+  s.state = w.q;
+  for (const Robot& r : w.robots) {
+    s.positions.push_back(r.pos);
+    s.blocked.push_back(r.blocked);
+  }
+  w.observer->on_step(s);
+}
+
+bool enables_controllable(const World& w) {
+  for (const auto& e : swarmcheck::supervisor::enabled(w.m.fsm, w.q))
+    if (w.m.fsm.events.at(e).controllable) return true;
+  return false;
+}
+
+// Rule 1; false when the run ends (no marked state reachable).
+bool choose(World& w, double t) {
+  while (!sm::is_marked(w.m, w.q) && enables_controllable(w)) {
+    const sm::Plan p = ask(w);
+    ++w.result.replans;
+    if (!p.found) {
+      w.result.reason = "no marked state is reachable from state " + w.q;
+      return false;
+    }
+    const std::string first = p.events.front();
+    if (!w.m.fsm.events.at(first).controllable) return true;
+    const sm::Meaning& start = w.m.events.at(first);
+    Robot& r = w.robots[start.robot];
+    r.tasks.push_back(start.target);
+    r.sent = true;
+    r.sent_to = start.target;
+    fire(w, first, t);
+  }
+  return true;
+}
+
+// The region robot i must enter before its task, if the plan says so (rule 3), else nothing.
+const sm::Region* detour_region(const World& w, const sm::Plan& p, std::size_t i) {
+  const Robot& r = w.robots[i];
+  for (const auto& e : p.events) {
+    const sm::Meaning& mn = w.m.events.at(e);
+    if (mn.robot != i) continue;
+    if (mn.kind != sm::MeaningKind::region_entry) return nullptr;
+    const sm::Region& g = w.m.regions[mn.target];
+    const bool needed = !sm::inside(g, w.m.tasks[r.tasks.front()].at) && !sm::inside(g, r.pos);
+    return needed ? &g : nullptr;
+  }
+  return nullptr;
+}
+
+void start_leg(World& w, std::size_t i) {
+  Robot& r = w.robots[i];
+  r.waypoint = w.m.tasks[r.tasks.front()].at;
+  r.waypoint_is_task = true;
+  const sm::Plan p = ask(w);
+  const sm::Region* g = detour_region(w, p, i);
+  if (!g) return;
+  for (std::size_t k = 0; k < 2; ++k) {
+    const double margin = std::min(0.5, (g->hi[k] - g->lo[k]) / 4);
+    r.waypoint[k] = std::clamp(r.pos[k], g->lo[k] + margin, g->hi[k] - margin);
+  }
+  r.waypoint_is_task = false;
+}
+
+Move propose(const World& w, const Robot& r) {
+  Move mv{r.pos, r.theta_rad, r.controller, r.on_leg, false};
+  if (w.o.body == sm::BodyModel::kinematic) {
+    const double d = sm::distance(r.pos, r.waypoint);
+    const double step = w.o.speed_m_per_s * w.o.dt_s;
+    mv.on_leg = true;
+    mv.arrived = d <= step;
+    if (mv.arrived)
+      mv.pos = r.waypoint;
+    else
+      mv.pos = {r.pos[0] + (r.waypoint[0] - r.pos[0]) * (step / d),
+                r.pos[1] + (r.waypoint[1] - r.pos[1]) * (step / d)};
+    return mv;
+  }
+  const ex::RobotParams params{};
+  const ex::BodyState pose{r.pos[0], r.pos[1], r.theta_rad};
+  const ex::ControllerInputs in{pose, r.waypoint, r.on_leg ? 0 : 1};  // 1: a waypoint to take
+  mv.controller = ex::controller_step(params, r.controller, in);
+  const ex::BodyState next = ex::body_step(params, pose, mv.controller.servo_left,
+                                           mv.controller.servo_right, w.o.dt_s);
+  mv.pos = {next.x_m, next.y_m};
+  mv.theta_rad = next.theta_rad;
+  if (!r.on_leg && mv.controller.on_destination_output == 0) mv.on_leg = true;
+  if (r.on_leg && mv.controller.on_destination_output == 1) mv.arrived = true;
+  return mv;
+}
+
+// Rule 3 for every robot; false when no robot moved.
+bool move_all(World& w, double t) {
+  bool moved = false;
+  for (std::size_t i = 0; i < w.robots.size(); ++i) {
+    Robot& r = w.robots[i];
+    r.blocked = false;
+    if (r.tasks.empty()) continue;
+    if (!r.on_leg) start_leg(w, i);
+    const Move mv = propose(w, r);
+    const std::vector<std::string> entries = sm::entry_events(w.m, i, r.pos, mv.pos);
+    if (!sm::fire_all(w.m, w.q, entries)) {
+      r.blocked = true;
+      continue;
+    }
+    moved = true;
+    r.travelled_m += sm::distance(r.pos, mv.pos);
+    r.pos = mv.pos;
+    r.theta_rad = mv.theta_rad;
+    r.controller = mv.controller;
+    r.on_leg = mv.on_leg;
+    if (mv.arrived) {
+      if (r.waypoint_is_task) r.tasks.erase(r.tasks.begin());
+      r.on_leg = false;
+    }
+    for (const auto& e : entries) fire(w, e, t);
+  }
+  return moved;
+}
+
+std::string deadlock_reason(const World& w) {
+  std::string enabled;
+  for (const auto& e : swarmcheck::supervisor::enabled(w.m.fsm, w.q))
+    enabled += (enabled.empty() ? "" : ", ") + e;
+  std::string out = fmt::format("deadlock in state {}: no robot can move (enabled events: {})",
+                                w.q, enabled.empty() ? "none" : enabled);
+  for (std::size_t i = 0; i < w.robots.size(); ++i) {
+    if (!w.robots[i].blocked) continue;
+    const Move mv = propose(w, w.robots[i]);
+    for (const auto& e : sm::entry_events(w.m, i, w.robots[i].pos, mv.pos))
+      if (!swarmcheck::supervisor::successor(w.m.fsm, w.q, e))
+        out += fmt::format("; robot {} waits to fire {}", w.m.robots[i].name, e);
+  }
+  return out;
+}
+
+}  // namespace
+
+sm::RunResult run_model(const sm::Mission& m, const sm::RunOptions& o, const PlanFunction& plan,
+                        sm::RunObserver* observer) {
+  SWARM_DEMAND(o.dt_s > 0);
+  World w{m, o, plan, observer, m.initial_state, {}, {}, {}};
+  w.robots.resize(m.robots.size());
+  for (std::size_t i = 0; i < m.robots.size(); ++i) w.robots[i].pos = m.robots[i].start;
+  for (const auto& e : sm::initial_entries(m)) fire(w, e, 0.0);
+  const sm::Plan first = ask(w);
+  w.result.makespan_planned = first.found ? first.cost.makespan : 0.0;
+  record_step(w, 0.0);
+  double t = 0.0;
+  const auto steps_max = static_cast<long long>(o.max_time_s / o.dt_s);
+  for (long long k = 0;; ++k) {
+    if (!choose(w, t)) break;
+    if (sm::is_marked(m, w.q)) {
+      w.result.completed = true;
+      w.result.reason = "mission complete";
+      break;
+    }
+    if (k >= steps_max) {
+      w.result.reason = fmt::format("time limit of {} s reached", o.max_time_s);
+      break;
+    }
+    t = static_cast<double>(k + 1) * o.dt_s;
+    if (!move_all(w, t)) {
+      w.result.reason = deadlock_reason(w);
+      break;
+    }
+    record_step(w, t);
+  }
+  w.result.final_state = w.q;
+  w.result.time_s = t;
+  for (const Robot& r : w.robots) w.result.travel.push_back(r.travelled_m);
+  return w.result;
+}
+
+}  // namespace swarmcheck::model::mission

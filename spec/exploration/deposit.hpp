@@ -1,0 +1,34 @@
+#pragma once
+// The deposit around a centre (DESIGN.md A4, spec/SPEC.md section 2), tabulated once per run.
+//
+// A kernel holds deposit_amount(params, di, dj) for every offset of a window when the window is
+// small, so that a step does not evaluate exp() per cell: a table of the same function of the
+// same doubles has the same bits. Large windows compute each amount on demand.
+#include <cstdint>
+#include <vector>
+
+#include "spec/exploration/neighbourhood.hpp"
+#include "spec/exploration/types.hpp"
+
+namespace swarmcheck::exploration {
+
+class DepositKernel {
+ public:
+  DepositKernel() = default;
+  DepositKernel(const Params& p, int32_t map_size);
+
+  // max_ph * exp(-d / a1) + epsilon / a2 for a cell (di, dj) away from the centre.
+  double amount(int32_t di, int32_t dj) const {
+    if (table_.empty()) return deposit_amount(params_, di, dj);
+    return table_[static_cast<std::size_t>((di + radius_) * side_ + (dj + radius_))];
+  }
+
+ private:
+  static constexpr int64_t kTableCellsMax = int64_t{1} << 16;
+  Params params_{};
+  int32_t radius_ = 0;
+  int32_t side_ = 0;
+  std::vector<double> table_;   // by (di + radius) * side + (dj + radius); empty: compute
+};
+
+}  // namespace swarmcheck::exploration

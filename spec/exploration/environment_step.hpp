@@ -1,0 +1,205 @@
+#pragma once
+// @component Environment (thesis Environment FMU), the executable small step (spec/SPEC.md
+// section 6). Written once, here; model/ runs it on a dense grid that evaluates every cell every
+// step, impl/ on a lazy grid and, for many robots, with planning by independent groups.
+//   inputs:  all_arrived (AND of the controllers' onDestinationOutput, previous step; cosim)
+//   state:   EnvironmentState (plain values) + a grid (pheromone, visited, obstacle, occupant)
+//   outputs: each robot's waypoint, onDestinationOutput, eP, sTime
+//   no direct feedthrough.
+//
+// Like mjModel / mjData: EnvironmentConfig is constant for a run, EnvironmentState is what a
+// step changes. One step at tick t, as named stages:
+//   1. handshake: plan = abstract ? true : environment_handshake(state, all_arrived).plan
+//   2. plan:      robots choose from the pheromone at t and move (Stages::plan: index order, or
+//                 anything with the same result); each fixes its deposit centre
+//   3. evaporate: tick := t + 1; every cell evaporates by one step (decay function or literal)
+//   4. deposit:   robot by robot in index order, around the deposit centres (Stages::deposit)
+//   5. progress:  eP, sTime; frozen from the first step with eP >= 100
+//
+// The grid is anything with these operations (a cell's pheromone is as of the tick given):
+//   Candidate candidate(CellIndex c, int64_t tick) const   {c, pheromone, obstacle or occupied}
+//   double    pheromone(CellIndex c, int64_t tick) const
+//   void      release(CellIndex c)               no robot stands on c (unconditionally)
+//   void      occupy(CellIndex c, int32_t r)     robot r stands on c (never an obstacle)
+//   bool      mark_visited(CellIndex c)          true if c was not visited before
+//   void      set_obstacle(CellIndex c)
+//   void      evaporate(int64_t tick)            every cell from tick - 1 to tick
+//   void      deposit(CellIndex c, int64_t tick, double amount)   value at tick + amount
+#include <concepts>
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <vector>
+
+#include "spec/exploration/choice.hpp"
+#include "spec/exploration/decay.hpp"
+#include "spec/exploration/deposit.hpp"
+#include "spec/exploration/handshake.hpp"
+#include "spec/exploration/neighbourhood.hpp"
+#include "spec/exploration/rule_set.hpp"
+#include "spec/exploration/scenario.hpp"
+#include "spec/exploration/trace.hpp"
+#include "spec/exploration/types.hpp"
+
+namespace swarmcheck::exploration {
+
+template <class G>
+concept EnvironmentGrid = requires(G& g, const G& cg, CellIndex c, int64_t tick, double amount, int32_t r) {
+  { cg.candidate(c, tick) } -> std::same_as<Candidate>;
+  { cg.pheromone(c, tick) } -> std::same_as<double>;
+  g.release(c);
+  g.occupy(c, r);
+  { g.mark_visited(c) } -> std::same_as<bool>;
+  g.set_obstacle(c);
+  g.evaporate(tick);
+  g.deposit(c, tick, amount);
+};
+
+// Constant for a run: the scenario and what is derived from it once.
+struct EnvironmentConfig {
+  Scenario scenario;
+  const RuleDescriptor* rules;   // the row of scenario.rule
+  ChoiceTerms terms;
+  DepositKernel deposit;
+  DecayTable decay;              // P[i] = f^(2^i) of the decay function
+  double ertu_dt;                // ertu * step_size, the literal update's one factor
+};
+EnvironmentConfig make_environment_config(const Scenario& s);   // s must be valid
+
+// Exploration progress (spec/SPEC.md section 6, stage 5).
+struct Progress {
+  int64_t visited = 0;
+  int64_t free_cells = 0;
+  double eP = 0;       // percent
+  double sTime = 0;    // s
+  std::optional<int64_t> completion_step;
+};
+// eP = visited / free_cells * 100 and sTime = tick * step_size, unless already complete; the run
+// completes at the first tick with eP >= 100, and both are frozen from then on.
+void update_progress(Progress& p, int64_t tick, double step_size_s);
+
+// Everything a step changes except the grid.
+struct EnvironmentState {
+  HandshakeState handshake;
+  int64_t tick = 0;
+  int64_t planning_steps = 0;
+  std::vector<EnvRobot> robots;            // cell and waypoint, by robot index
+  std::vector<CellIndex> deposit_centre;   // of the last planning step
+  Progress progress;
+};
+
+// The candidates of a robot in c: its window without c, raster order, pheromone at tick.
+template <EnvironmentGrid G>
+void gather_candidates(const EnvironmentConfig& cfg, const G& grid, CellIndex c, int64_t tick,
+                       std::vector<Candidate>& out) {
+  out.clear();
+  const Window w = window_around(c, cfg.scenario.params.s_range, cfg.scenario.map_size);
+  for (int32_t i = w.i_lo; i <= w.i_hi; ++i)
+    for (int32_t j = w.j_lo; j <= w.j_hi; ++j)
+      if (i != c[0] || j != c[1]) out.push_back(grid.candidate(CellIndex{i, j}, tick));
+}
+
+// Applies one robot's decision; returns how many cells it newly marked visited (0 or 1).
+template <EnvironmentGrid G>
+int64_t apply_decision(const EnvironmentConfig& cfg, EnvironmentState& env, G& grid, int32_t r,
+                       const RobotDecision& d) {
+  EnvRobot& robot = env.robots[static_cast<std::size_t>(r)];
+  if (d.moves) {
+    grid.release(robot.cell);
+    robot.cell = d.to;
+    robot.waypoint = centre_of(d.to, cfg.scenario.cell_size);
+    if (d.occupies) grid.occupy(d.to, r);
+  }
+  env.deposit_centre[static_cast<std::size_t>(r)] = d.deposit_centre;
+  return d.marks && grid.mark_visited(d.mark) ? 1 : 0;
+}
+
+// One robot's planning step: gather, choose, decide, apply. `scratch` is reused storage.
+// Returns how many cells it newly marked visited.
+template <EnvironmentGrid G>
+int64_t plan_robot(const EnvironmentConfig& cfg, EnvironmentState& env, G& grid, int32_t r,
+                   std::vector<Candidate>& scratch) {
+  const CellIndex current = env.robots[static_cast<std::size_t>(r)].cell;
+  gather_candidates(cfg, grid, current, env.tick, scratch);
+  const Choice ch = choose(*cfg.rules, cfg.terms, scratch, DrawSite{cfg.scenario.seed, env.tick, r});
+  return apply_decision(cfg, env, grid, r, decide(*cfg.rules, current, scratch, ch));
+}
+
+// The deposit of one robot around `centre`, window cells in raster order.
+template <EnvironmentGrid G>
+void deposit_around(const EnvironmentConfig& cfg, G& grid, CellIndex centre, int64_t tick) {
+  const Window w = window_around(centre, cfg.scenario.params.s_range, cfg.scenario.map_size);
+  for (int32_t i = w.i_lo; i <= w.i_hi; ++i)
+    for (int32_t j = w.j_lo; j <= w.j_hi; ++j)
+      grid.deposit(CellIndex{i, j}, tick, cfg.deposit.amount(i - centre[0], j - centre[1]));
+}
+
+// The spec's stages: robots one after another in index order. Any other Stages (parallel
+// groups, prefetching) must give exactly these results.
+struct IndexOrder {
+  template <EnvironmentGrid G>
+  int64_t plan(const EnvironmentConfig& cfg, EnvironmentState& env, G& grid) const {
+    std::vector<Candidate> scratch;
+    int64_t newly = 0;
+    for (std::size_t r = 0; r < env.robots.size(); ++r)
+      newly += plan_robot(cfg, env, grid, static_cast<int32_t>(r), scratch);
+    return newly;
+  }
+  template <EnvironmentGrid G>
+  void deposit(const EnvironmentConfig& cfg, const EnvironmentState& env, G& grid) const {
+    for (const CellIndex& c : env.deposit_centre) deposit_around(cfg, grid, c, env.tick);
+  }
+};
+
+// Initialisation (thesis setEnvironment): robots in index order deposit around their start cell
+// and mark it occupied and visited; then obstacles are set.
+template <EnvironmentGrid G>
+EnvironmentState initial_environment(const EnvironmentConfig& cfg, G& grid) {
+  const Scenario& s = cfg.scenario;
+  EnvironmentState env;
+  env.handshake = initial_handshake();
+  for (std::size_t r = 0; r < s.robots.size(); ++r) {
+    const CellIndex c = cell_of(s.robots[r], s.cell_size);
+    env.robots.push_back(EnvRobot{c, s.robots[r]});
+    deposit_around(cfg, grid, c, 0);
+    grid.occupy(c, static_cast<int32_t>(r));
+    env.progress.visited += grid.mark_visited(c) ? 1 : 0;
+  }
+  for (const CellIndex& c : s.obstacles) grid.set_obstacle(c);
+  env.deposit_centre.resize(env.robots.size());
+  env.progress.free_cells = free_cell_count(s);
+  update_progress(env.progress, 0, s.params.step_size);
+  return env;
+}
+
+// One Environment step (the stages above). all_arrived is ignored in abstract mode.
+template <EnvironmentGrid G, class Stages = IndexOrder>
+void environment_step(const EnvironmentConfig& cfg, EnvironmentState& env, G& grid, bool all_arrived,
+                      const Stages& stages = Stages{}) {
+  bool planning = true;
+  if (cfg.scenario.mode == Mode::cosim) {
+    const HandshakeStep hs = environment_handshake(env.handshake, all_arrived);
+    planning = hs.plan;
+    env.handshake = hs.next;
+  }
+  if (planning) env.progress.visited += stages.plan(cfg, env, grid);
+  ++env.tick;
+  grid.evaporate(env.tick);
+  if (planning) {
+    stages.deposit(cfg, env, grid);
+    ++env.planning_steps;
+  }
+  update_progress(env.progress, env.tick, cfg.scenario.params.step_size);
+}
+
+// FNV-1a over the bits of every cell's pheromone at tick, raster order.
+template <EnvironmentGrid G>
+uint64_t pheromone_digest(const EnvironmentConfig& cfg, const G& grid, int64_t tick) {
+  Fnv1a h;
+  const int32_t n = cfg.scenario.map_size;
+  for (int32_t i = 0; i < n; ++i)
+    for (int32_t j = 0; j < n; ++j) h.add(grid.pheromone(CellIndex{i, j}, tick));
+  return h.h;
+}
+
+}  // namespace swarmcheck::exploration

@@ -1,0 +1,26 @@
+#include "spec/exploration/master.hpp"
+
+#include "spec/util/demand.hpp"
+
+namespace swarmcheck::exploration {
+
+StepRecord make_step_record(const EnvironmentState& env, uint64_t pheromone_digest,
+                            std::span<const ControllerState> controllers, std::span<const BodyState> bodies) {
+  SWARM_DEMAND(controllers.size() == env.robots.size());
+  SWARM_DEMAND(bodies.size() == env.robots.size());
+  StepRecord r;
+  r.step = env.tick;
+  r.planning_steps = env.planning_steps;
+  r.handshake = env.handshake;
+  r.visited = env.progress.visited;
+  r.free_cells = env.progress.free_cells;
+  r.eP = env.progress.eP;
+  r.sTime = env.progress.sTime;
+  r.pheromone_digest = pheromone_digest;
+  r.robots.reserve(bodies.size());
+  for (std::size_t k = 0; k < bodies.size(); ++k)
+    r.robots.push_back(RobotRecord{env.robots[k].cell, env.robots[k].waypoint, bodies[k], controllers[k]});
+  return r;
+}
+
+}  // namespace swarmcheck::exploration
