@@ -1,0 +1,295 @@
+// swarmcheck dse: design-space exploration on an INTO-CPS DSE configuration, on threads here or
+// on Open MPI ranks; results, report and journal in one folder.
+#include "apps/swarmcheck/dse_verb.hpp"
+
+#include <fmt/core.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <csignal>
+#include <filesystem>
+#include <memory>
+#include <numeric>
+#include <thread>
+
+#include "apps/swarmcheck/mpi_pool.hpp"
+#include "apps/swarmcheck/verb.hpp"
+#include "impl/dse/format.hpp"
+#include "impl/dse/report_html.hpp"
+#include "impl/dse/report_svg.hpp"
+#include "impl/dse/results_io.hpp"
+#include "impl/dse/sweep.hpp"
+#include "impl/io/atomic_file.hpp"
+#include "spec/exploration/scenario.hpp"
+
+namespace swarmcheck::cli {
+namespace {
+
+using namespace swarmcheck::dse;
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+struct DseArgs {
+  std::string config_path;
+  std::string scenario_path;   // empty: the built-in default
+  std::string out_dir = "dse-out";
+  int32_t threads = 0;         // 0: every core
+  bool json = false;
+};
+
+// SIGINT: finish the points in flight, keep them in the journal, exit 130. A second Ctrl-C
+// (the handler resets itself) ends the process at once; the journal stays consistent.
+std::atomic<bool> g_interrupted{false};
+
+extern "C" void on_sigint(int) {
+  g_interrupted.store(true);
+  const char msg[] = "\nswarmcheck dse: interrupted: finishing the points in flight (Ctrl-C again to stop now)\n";
+  const ssize_t ignored = ::write(2, msg, sizeof msg - 1);
+  (void)ignored;
+}
+
+class SigintGuard {
+ public:
+  SigintGuard() {
+    g_interrupted.store(false);
+    struct sigaction sa {};
+    sa.sa_handler = on_sigint;
+    sa.sa_flags = SA_RESETHAND;
+    sigemptyset(&sa.sa_mask);
+    sigaction(SIGINT, &sa, &old_);
+  }
+  ~SigintGuard() { sigaction(SIGINT, &old_, nullptr); }
+
+ private:
+  struct sigaction old_ {};
+};
+
+// A progress bar with ETA on stderr, only when stderr is a terminal.
+class ProgressBar {
+ public:
+  explicit ProgressBar(bool genetic) : enabled_(::isatty(2) == 1), genetic_(genetic), start_(Clock::now()) {}
+  void update(const SweepProgress& p) {
+    if (!enabled_) return;
+    const auto now = Clock::now();
+    if (p.done < p.total && now - last_ < std::chrono::milliseconds(100)) return;
+    last_ = now;
+    const double elapsed = std::chrono::duration<double>(now - start_).count();
+    const double rate = p.computed > 0 ? static_cast<double>(p.computed) / elapsed : 0;
+    const std::size_t width = 30;
+    const std::size_t filled = p.total ? width * p.done / p.total : width;
+    std::string eta = "--:--";
+    if (rate > 0) {
+      const auto s = static_cast<long long>(static_cast<double>(p.total - p.done) / rate);
+      eta = fmt::format("{}:{:02d}", s / 60, s % 60);
+    }
+    fmt::print(stderr, "\r{}[{}{}] {}/{} points  {:.1f} points/s  ETA {}   ", genetic_ ? fmt::format("gen {} ", p.generation) : "",
+               std::string(filled, '#'), std::string(width - filled, '.'), p.done, p.total, rate, eta);
+  }
+  void finish() {
+    if (enabled_) fmt::print(stderr, "\r{:90}\r", "");
+  }
+
+ private:
+  bool enabled_, genetic_;
+  Clock::time_point start_, last_{};
+};
+
+// Design points on the other MPI ranks: a genome out, the point's runs (JSON) back.
+class MpiExecutor : public Executor {
+ public:
+  void evaluate(const std::vector<Genome>& batch, const std::function<void(std::size_t, PointRuns)>& done) override {
+    std::vector<std::string> tasks;
+    for (const Genome& g : batch) tasks.push_back(json_io::Json(g).dump());
+    mpi::distribute(tasks, [&](std::size_t i, std::string reply) { done(i, point_runs_from_json(json_io::Json::parse(reply))); },
+                    [](std::size_t) { return g_interrupted.load(); });
+  }
+};
+
+void write_outputs(const std::string& dir, const DesignSpace& space, const DseResults& r, const ResultsContext& ctx) {
+  const fs::path d(dir);
+  io::write_file_atomically((d / "results.csv").string(), results_csv(space, r));
+  io::write_file_atomically((d / "results.json").string(), results_json(space, r, ctx).dump(2) + "\n");
+  io::write_file_atomically((d / "report.svg").string(), pareto_svg(space, r));
+  io::write_file_atomically((d / "report.html").string(), report_html(space, r, ctx));
+}
+
+// The ranking's first rows as a table that fits a screen.
+void print_table(const DesignSpace& space, const DseResults& r) {
+  const DseConfig& c = space.config();
+  // The parameters that vary (all when none does), objectives to 6 significant digits.
+  std::vector<std::size_t> shown_params;
+  for (std::size_t k = 0; k < c.parameters.size(); ++k)
+    if (c.parameters[k].values.size() > 1) shown_params.push_back(k);
+  if (shown_params.empty())
+    for (std::size_t k = 0; k < c.parameters.size(); ++k) shown_params.push_back(k);
+  std::vector<std::vector<std::string>> rows{{"rank", "point"}};
+  for (const std::size_t k : shown_params) rows[0].push_back(plain_name(c.parameters[k].name));
+  for (const Objective& o : c.objectives) rows[0].push_back(o.name);
+  rows[0].push_back("status");
+  std::vector<std::size_t> order(r.points.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    const auto key = [&](std::size_t i) { return r.points[i].rank > 0 ? r.points[i].rank : INT32_MAX; };
+    return key(a) < key(b);
+  });
+  const std::size_t shown = std::min<std::size_t>(order.size(), 15);
+  for (std::size_t n = 0; n < shown; ++n) {
+    const PointResult& p = r.points[order[n]];
+    std::vector<std::string> row{p.rank > 0 ? std::to_string(p.rank) : "-", std::to_string(order[n] + 1)};
+    for (const std::size_t k : shown_params) row.push_back(parameter_value_text(space, p.genome, k));
+    for (std::size_t k = 0; k < c.objectives.size(); ++k) {
+      const bool has = k < p.objectives.size() && p.objectives[k].present;
+      std::string cell = has ? fmt::format("{:.6g}", p.objectives[k].mean) : "";
+      if (has && p.objectives[k].ci95) cell += " ±" + fmt::format("{:.3g}", *p.objectives[k].ci95);
+      row.push_back(cell);
+    }
+    row.push_back(p.status);
+    rows.push_back(std::move(row));
+  }
+  std::vector<std::size_t> width(rows[0].size(), 0);
+  for (const auto& row : rows)
+    for (std::size_t k = 0; k < row.size(); ++k) width[k] = std::max(width[k], row[k].size());
+  for (const auto& row : rows) {
+    std::string line = " ";
+    for (std::size_t k = 0; k < row.size(); ++k) line += " " + row[k] + std::string(width[k] - row[k].size(), ' ');
+    while (!line.empty() && line.back() == ' ') line.pop_back();
+    fmt::print("{}\n", line);
+  }
+  if (order.size() > shown) fmt::print("  ... {} more points in results.csv\n", order.size() - shown);
+}
+
+void print_summary(const DseArgs& a, const DesignSpace& space, const DseResults& r, const SweepOutcome& o,
+                   double seconds, const std::string& workers) {
+  const DseConfig& c = space.config();
+  fmt::print("swarmcheck dse: {} on {}: {}\n", a.config_path, a.scenario_path.empty() ? "the default scenario" : a.scenario_path,
+             c.algorithm == Algorithm::genetic
+                 ? fmt::format("genetic search, {} generations, {} of {} points evaluated", r.generations, r.points.size(), space.size())
+                 : fmt::format("exhaustive, {} points", r.points.size()));
+  fmt::print("ran {} points ({} runs) in {:.2f} s on {}: {:.1f} runs/s; {} points from the journal\n", o.computed, o.runs,
+             seconds, workers, seconds > 0 ? static_cast<double>(o.runs) / seconds : 0.0, o.from_journal);
+  print_table(space, r);
+  fmt::print("Pareto front ({} point{}): {}\n", r.front.size(), r.front.size() == 1 ? "" : "s", front_text(space, r, 6));
+  const fs::path d(a.out_dir);
+  fmt::print("wrote {}, {}, {}, {}\n", (d / "results.csv").string(), (d / "results.json").string(),
+             (d / "report.html").string(), (d / "report.svg").string());
+}
+
+// Everything that can be wrong with the input, before any file or folder is touched.
+struct Plan {
+  DseConfig config;
+  exploration::Scenario base;
+};
+
+Plan load_plan(const DseArgs& a) {
+  Plan p{load_dse_config(a.config_path),
+         a.scenario_path.empty() ? exploration::default_scenario() : exploration::load_scenario(a.scenario_path)};
+  if (a.threads < 0) throw InputError("--threads", "expected an integer >= 0 (0: every core)");
+  return p;
+}
+
+int run_rank0(const DseArgs& a, const DesignSpace& space, Executor& executor, const std::string& workers) {
+  std::error_code ec;
+  fs::create_directories(a.out_dir, ec);
+  if (ec) throw InputError(a.out_dir, "cannot create the output folder: " + ec.message());
+  ProgressBar bar(space.config().algorithm == Algorithm::genetic);
+  SweepOptions options{(fs::path(a.out_dir) / "journal.jsonl").string(), &g_interrupted,
+                       [&bar](const SweepProgress& p) { bar.update(p); }};
+  const auto start = Clock::now();
+  const SweepOutcome outcome = run_sweep(space, executor, options);
+  bar.finish();
+  const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  if (outcome.interrupted) {
+    fmt::print(stderr, "swarmcheck dse: interrupted after {} new points ({} runs); they are in {}. Run the same command "
+                       "again to finish the sweep.\n", outcome.computed, outcome.runs, options.journal_path);
+    return 130;
+  }
+  DseResults results = rank_outcomes(space, outcome.points);
+  results.generations = outcome.generations;
+  const ResultsContext ctx{a.config_path, a.scenario_path.empty() ? "default scenario" : a.scenario_path};
+  write_outputs(a.out_dir, space, results, ctx);
+  if (a.json)
+    fmt::print("{}\n", results_json(space, results, ctx).dump());
+  else
+    print_summary(a, space, results, outcome, seconds, workers);
+  return 0;
+}
+
+int dse_threads(const DseArgs& a) {
+  const Plan plan = load_plan(a);
+  const DesignSpace space(plan.config, plan.base);
+  check_design_space(space);
+  const SigintGuard guard;
+  ThreadExecutor executor(space, needed_columns(plan.config), a.threads, &g_interrupted);
+  const int32_t threads = a.threads > 0 ? a.threads : static_cast<int32_t>(std::max(1u, std::thread::hardware_concurrency()));
+  return run_rank0(a, space, executor, fmt::format("{} thread{}", threads, threads == 1 ? "" : "s"));
+}
+
+// Under mpirun: every rank reads and checks the input (so every rank agrees on the points);
+// rank 0 runs the sweep, the others evaluate the points it sends.
+int dse_mpi(const DseArgs& a) {
+  mpi::Session session;
+  if (session.rank() != 0) {
+    std::signal(SIGINT, SIG_IGN);   // rank 0 decides when to stop
+    try {
+      const Plan plan = load_plan(a);
+      const DesignSpace space(plan.config, plan.base);
+      check_design_space(space);
+      const std::vector<Column> columns = needed_columns(plan.config);
+      mpi::serve([&](const std::string& task) {
+        const Genome g = json_io::Json::parse(task).get<Genome>();
+        return to_json(evaluate_point(space, g, columns)).dump();
+      });
+    } catch (const InputError&) {
+      return 2;   // rank 0 reports it
+    }
+    return 0;
+  }
+  const int status = guarded([&] {
+    const Plan plan = load_plan(a);
+    const DesignSpace space(plan.config, plan.base);
+    check_design_space(space);
+    const SigintGuard guard;
+    MpiExecutor executor;
+    const int rc = run_rank0(a, space, executor, fmt::format("{} MPI ranks ({} computing)", session.size(), session.size() - 1));
+    mpi::release_workers();
+    return rc;
+  });
+  if (status == 2 || status == 3) {
+    std::fflush(stderr);
+    mpi::Session::abort(status);   // workers may be waiting for tasks that will never come
+  }
+  return status;
+}
+
+int dse(const DseArgs& a) {
+  const mpi::Launch launch = mpi::launch_from_environment();
+  if (launch.size > 1) {
+    if (!mpi::compiled_in()) {
+      if (launch.rank == 0) throw InputError("mpirun", mpi::missing_mpi_message());
+      return 2;
+    }
+    return dse_mpi(a);
+  }
+  return dse_threads(a);
+}
+
+}  // namespace
+
+void add_dse_verb(CLI::App& app, int& exit_code) {
+  auto a = std::make_shared<DseArgs>();
+  CLI::App* cmd = app.add_subcommand(
+      "dse", "Design-space exploration on an INTO-CPS DSE configuration (.dse.json): sweep, rank, report");
+  cmd->add_option("config", a->config_path, "The DSE configuration (INTO-CPS format; see README)")->required();
+  cmd->add_option("--scenario", a->scenario_path, "The base scenario the parameters change (default: the built-in one)");
+  cmd->add_option("-o,--out", a->out_dir, "Folder for results.csv, results.json, report.html, report.svg, journal.jsonl")
+      ->capture_default_str();
+  cmd->add_option("--threads", a->threads, "Design points in parallel (0: every core)")->capture_default_str();
+  cmd->add_flag("--json", a->json, "Print the results object (results.json) instead of the summary");
+  cmd->callback([a, &exit_code] {
+    exit_code = guarded([&] { return dse(*a); });
+  });
+}
+
+}  // namespace swarmcheck::cli

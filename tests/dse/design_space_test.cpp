@@ -1,0 +1,103 @@
+// Design points on a base scenario: the factorial order, replicate seeds, seeded placement,
+// parameter constraints and the journal key.
+#include <gtest/gtest.h>
+#include <rapidcheck/gtest.h>
+
+#include <set>
+
+#include "impl/dse/design_space.hpp"
+#include "impl/dse/sweep.hpp"
+#include "spec/exploration/scenario.hpp"
+
+using namespace swarmcheck;
+using namespace swarmcheck::dse;
+using exploration::Scenario;
+
+namespace {
+
+DseConfig config(const std::string& parameters, const std::string& constraints = "[]") {
+  return parse_dse_config(R"({"parameters": )" + parameters + R"(, "parameterConstraints": )" + constraints +
+                              R"(, "objectiveDefinitions": {"internalFunctions": {"e": {"columnID": "eP", "objectiveType": "max"}}}})",
+                          "c.json");
+}
+
+}  // namespace
+
+TEST(DesignSpace, TheFirstParameterVariesSlowest) {
+  const DseConfig c = config(R"({"a1": [1, 2], "rule": ["thesis", "deterministic", "stochastic"]})");
+  const DesignSpace space(c, exploration::default_scenario());
+  EXPECT_EQ(space.size(), 6u);
+  EXPECT_EQ(space.genome_of(0), (Genome{0, 0}));
+  EXPECT_EQ(space.genome_of(2), (Genome{0, 2}));
+  EXPECT_EQ(space.genome_of(3), (Genome{1, 0}));
+  for (uint64_t i = 0; i < space.size(); ++i) EXPECT_EQ(space.index_of(space.genome_of(i)), i);
+  const Scenario s = space.scenario(space.genome_of(5), 0);
+  EXPECT_EQ(s.params.a1, 2.0);
+  EXPECT_EQ(s.rule, exploration::RuleSet::stochastic);
+  EXPECT_EQ(space.describe(space.genome_of(5)), "a1=2, rule=stochastic");
+}
+
+TEST(DesignSpace, ReplicateZeroIsTheScenarioItselfAndOthersHaveDistinctSeeds) {
+  const DseConfig c = config(R"({"replicates": [4], "seed": [7]})");
+  const DesignSpace space(c, exploration::default_scenario());
+  const Genome g{0, 0};
+  EXPECT_EQ(space.replicates(g), 4);
+  std::set<uint64_t> seeds;
+  for (int32_t r = 0; r < 4; ++r) seeds.insert(space.scenario(g, r).seed);
+  EXPECT_EQ(space.scenario(g, 0).seed, 7u);
+  EXPECT_EQ(seeds.size(), 4u);
+  EXPECT_EQ(space.scenario(g, 2).seed, replicate_seed(7, 2));
+}
+
+TEST(DesignSpace, ParameterConstraintsExcludePointsBeforeTheyRun) {
+  const DseConfig c = config(R"({"a1": [0.5, 1, 2], "a2": [0.5, 1]})", R"(["a1 <= a2", "eta > 0.5"])");
+  const DesignSpace space(c, exploration::default_scenario());
+  EXPECT_EQ(space.violated_parameter_constraint(Genome{0, 0}), -1);
+  EXPECT_EQ(space.violated_parameter_constraint(Genome{2, 1}), 0);   // a1 = 2 > a2 = 1
+  EXPECT_EQ(space.knob_value(Genome{0, 0}, Knob::eta).number, 0.9);   // not swept: the base's
+}
+
+TEST(DesignSpace, BadCombinationsAreFoundBeforeAnythingRunsAndNameThePoint) {
+  const DseConfig c = config(R"({"mode": ["abstract", "cosim"], "step_size": [0.1, 18]})");
+  const DesignSpace space(c, exploration::default_scenario());
+  try {
+    check_design_space(space);
+    FAIL() << "cosim with step_size 18 was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("point mode=cosim, step_size=18: params.step_size: expected at most 0.2 s"), std::string::npos) << e.what();
+  }
+  const DseConfig crowded = config(R"({"nRobots": [200], "mapSize": [10]})");
+  EXPECT_THROW(check_design_space(DesignSpace(crowded, exploration::default_scenario())), InputError);
+}
+
+TEST(DesignSpace, TheKeyChangesWithAnythingTheRunsDependOn) {
+  const DseConfig c = config(R"({"a1": [0.5, 1]})");
+  const DesignSpace a(c, exploration::default_scenario());
+  Scenario other = exploration::default_scenario();
+  other.max_steps = 99;
+  const DesignSpace b(c, other);
+  EXPECT_EQ(a.point_key(Genome{0}), a.point_key(Genome{0}));
+  EXPECT_NE(a.point_key(Genome{0}), a.point_key(Genome{1}));
+  EXPECT_NE(a.point_key(Genome{0}), b.point_key(Genome{0}));
+  EXPECT_EQ(a.point_key(Genome{0}).size(), 16u);
+}
+
+RC_GTEST_PROP(DesignSpace, SeededPlacementIsValidExactAndRepeatable, (uint64_t seed)) {
+  const int map = *rc::gen::inRange(2, 40);
+  const int cells = map * map;
+  const int robots = *rc::gen::inRange(1, std::max(2, cells / 2));
+  const double density = *rc::gen::element(0.0, 0.1, 0.3, 0.45);
+  const DseConfig c = config(R"({"mapSize": [)" + std::to_string(map) + R"(], "nRobots": [)" + std::to_string(robots) +
+                             R"(], "obstacleDensity": [)" + std::to_string(density) + R"(], "seed": [)" +
+                             std::to_string(seed % 1000000) + R"(]})");
+  const DesignSpace space(c, exploration::default_scenario());
+  const Genome g{0, 0, 0, 0};
+  const auto obstacles = static_cast<std::size_t>(std::llround(density * cells));
+  RC_PRE(obstacles + static_cast<std::size_t>(robots) <= static_cast<std::size_t>(cells));
+  const Scenario s = space.scenario(g, 0);   // validates: distinct, in the map, robots not on obstacles
+  RC_ASSERT(s.robots.size() == static_cast<std::size_t>(robots));
+  RC_ASSERT(s.obstacles.size() == obstacles);
+  for (const auto& r : s.robots) RC_ASSERT(r[0] - std::floor(r[0]) == 0.5);   // cell centres
+  RC_ASSERT(exploration::free_cell_count(s) == cells - static_cast<int64_t>(obstacles));
+  RC_ASSERT(json_io::to_json(space.scenario(g, 0)) == json_io::to_json(s));
+}
