@@ -1,7 +1,7 @@
 # swarmcheck: the two commands of the README are `make run` and `make test`.
 JOBS ?= $(shell nproc)
 
-.PHONY: deps build run test test-debug bench clean
+.PHONY: deps build run test test-debug bench pictures clean
 
 deps:
 	@scripts/install-deps
@@ -32,6 +32,10 @@ bench: deps
 	  name=$${b##*/bench_}; [ "$$name" = exploration ] && continue; \
 	  $$b --benchmark_out=bench/results-$$name.json --benchmark_out_format=json; \
 	done
+
+# The README's pictures (docs/img/): swarmcheck's own SVGs and the browser tests' screenshots.
+pictures: build
+	@scripts/pictures build
 
 clean:
 	rm -rf build build-debug build-bench

@@ -14,3 +14,11 @@ endif()
 if(SWARMCHECK_BENCH)
   find_package(benchmark REQUIRED)
 endif()
+# Optional: Open MPI spreads `dse` and `conform` over ranks (mpirun); without it they run on one
+# machine's threads and say how to get MPI when started under mpirun.
+find_package(MPI COMPONENTS CXX QUIET)   # the C API, found through the C++ compiler
+if(MPI_CXX_FOUND)
+  message(STATUS "swarmcheck: Open MPI found: dse and conform can run under mpirun")
+else()
+  message(STATUS "swarmcheck: MPI not found (install libopenmpi-dev openmpi-bin): building without distribution")
+endif()

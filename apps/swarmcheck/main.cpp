@@ -2,10 +2,14 @@
 #include <CLI/CLI.hpp>
 
 #include "apps/swarmcheck/conform_verb.hpp"
+#include "apps/swarmcheck/dse_verb.hpp"
+#include "apps/swarmcheck/edit_verb.hpp"
 #include "apps/swarmcheck/fsm_verb.hpp"
 #include "apps/swarmcheck/mission_verb.hpp"
 #include "apps/swarmcheck/prove_verb.hpp"
 #include "apps/swarmcheck/run_verb.hpp"
+#include "apps/swarmcheck/serve_verb.hpp"
+#include "apps/swarmcheck/view_verb.hpp"
 
 int main(int argc, char** argv) {
   CLI::App app{
@@ -19,6 +23,10 @@ int main(int argc, char** argv) {
   swarmcheck::cli::add_fsm_verb(app, exit_code);
   swarmcheck::cli::add_prove_verb(app, exit_code);
   swarmcheck::cli::add_mission_verb(app, exit_code);
+  swarmcheck::cli::add_dse_verb(app, exit_code);
+  swarmcheck::cli::add_view_verb(app, exit_code);
+  swarmcheck::cli::add_edit_verb(app, exit_code);
+  swarmcheck::cli::add_serve_verb(app, exit_code);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

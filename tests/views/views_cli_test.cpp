@@ -1,0 +1,97 @@
+// The view / edit / serve verbs from the outside: bad input gets exit status 2, the message the
+// other verbs give, and no output file; good input writes one self-contained page.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "tests/util/shell.hpp"
+
+using swarmcheck::testing::run_binary;
+namespace fs = std::filesystem;
+
+namespace {
+
+const std::string kBin = SWARMCHECK_BIN;
+const std::string kSource = SWARMCHECK_SOURCE_DIR;
+
+fs::path scratch() {
+  const fs::path d = fs::temp_directory_path() / ("swarmcheck-views-cli-" + std::to_string(::getpid()));
+  fs::create_directories(d);
+  return d;
+}
+
+std::string write(const fs::path& p, const std::string& text) {
+  std::ofstream(p) << text;
+  return p.string();
+}
+
+}  // namespace
+
+TEST(ViewsCli, EditRefusesWhatRunRefusesWithTheSameMessageAndWritesNothing) {
+  const fs::path d = scratch();
+  const std::string bad = write(d / "bad.json", R"({"map_size": 4, "robots": [[0.5, 0.5], [0.6, 0.5]]})");
+  const auto run = run_binary(kBin, "run " + bad);
+  const auto edit = run_binary(kBin, "edit " + bad + " -o " + (d / "e.html").string());
+  EXPECT_EQ(run.status, 2);
+  EXPECT_EQ(edit.status, 2);
+  EXPECT_EQ(edit.out, run.out);
+  EXPECT_FALSE(fs::exists(d / "e.html"));
+  const auto bad_mission = run_binary(kBin, "edit " + write(d / "m.json", R"({"fsm": "none.fsm"})") + " -o " + (d / "m.html").string());
+  EXPECT_EQ(bad_mission.status, 2) << bad_mission.out;
+  EXPECT_FALSE(fs::exists(d / "m.html"));
+}
+
+TEST(ViewsCli, ViewOfABadTraceIsStatus2WithNoPartialOutputAndKeepsAnOldFile) {
+  const fs::path d = scratch();
+  const std::string out = (d / "v.html").string();
+  write(out, "old");
+  const std::string bad = write(d / "t.jsonl", "{\"format\":\"swarmcheck-trace\",\"system\":\"exploration\"}\n");
+  const auto r = run_binary(kBin, "view " + bad + " -o " + out);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.out, "swarmcheck: error: " + bad + ":1: the header has no \"scenario\"\n");
+  std::ifstream in(out);
+  std::string kept((std::istreambuf_iterator<char>(in)), {});
+  EXPECT_EQ(kept, "old");
+  const auto broken_proof = run_binary(kBin, "view " + write(d / "h.jsonl", "{\"format\":\"swarmcheck-trace\",\"system\":\"handshake\"}\n{}\n") + " -o " + out);
+  EXPECT_EQ(broken_proof.status, 2) << broken_proof.out;
+}
+
+TEST(ViewsCli, TraceFieldWritesFormat2WhichReplayStillReproduces) {
+  const fs::path d = scratch();
+  const std::string trace = (d / "f.jsonl").string();
+  ASSERT_EQ(run_binary(kBin, "run --mode abstract --trace " + trace + " --trace-field 7").status, 0);
+  std::ifstream in(trace);
+  std::string line;
+  std::getline(in, line);
+  EXPECT_NE(line.find("\"format_version\":2"), std::string::npos);
+  EXPECT_NE(line.find("\"field_every\":7"), std::string::npos);
+  int fields = 0, records = 0;
+  while (std::getline(in, line)) (line.rfind("{\"type\":\"field\"", 0) == 0 ? fields : records) += 1;
+  EXPECT_EQ(fields, (records - 1) / 7 + 1 + ((records - 1) % 7 != 0 ? 1 : 0));   // every 7th step and the last
+  const auto replay = run_binary(kBin, "replay " + trace);
+  EXPECT_EQ(replay.status, 0) << replay.out;
+  EXPECT_NE(replay.out.find("agree bit for bit"), std::string::npos) << replay.out;
+  const auto no_trace = run_binary(kBin, "run --trace-field 5");
+  EXPECT_EQ(no_trace.status, 2);
+  EXPECT_EQ(no_trace.out, "swarmcheck: error: --trace-field: needs --trace FILE\n");
+}
+
+TEST(ViewsCli, PicturesAreWrittenForRunsMissionsAndAutomata) {
+  const fs::path d = scratch();
+  EXPECT_EQ(run_binary(kBin, "run --mode abstract --svg " + (d / "r.svg").string()).status, 0);
+  EXPECT_EQ(run_binary(kBin, "mission run " + kSource + "/scenarios/thesis/thesis-mission.json --body kinematic --svg " + (d / "m.svg").string()).status, 0);
+  EXPECT_EQ(run_binary(kBin, "fsm export " + kSource + "/scenarios/thesis/control2.fsm --to svg -o " + (d / "f.svg").string()).status, 0);
+  for (const char* f : {"r.svg", "m.svg", "f.svg"}) {
+    std::ifstream in(d / f);
+    std::string text((std::istreambuf_iterator<char>(in)), {});
+    EXPECT_EQ(text.rfind("<svg", 0), 0u) << f;
+    EXPECT_NE(text.find("</svg>"), std::string::npos) << f;
+  }
+}
+
+TEST(ViewsCli, ServeRefusesABadPort) {
+  const auto r = run_binary(kBin, "serve --port 70000");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.out, "swarmcheck: error: --port: expected an integer in [0, 65535], got 70000\n");
+}

@@ -1,0 +1,111 @@
+#include "views/fsm_svg.hpp"
+
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "spec/util/demand.hpp"
+#include "spec/util/input_error.hpp"
+
+namespace swarmcheck::views {
+namespace {
+
+std::string quoted(const std::string& s) {
+  std::string out = "\"";
+  for (const char c : s) {
+    if (c == '"' || c == '\\') out += '\\';
+    out += c;
+  }
+  return out + "\"";
+}
+
+std::string find_dot() {
+  const char* path = std::getenv("PATH");
+  std::stringstream dirs(path ? path : "/usr/bin:/bin");
+  std::string dir;
+  while (std::getline(dirs, dir, ':')) {
+    const std::string candidate = (dir.empty() ? "." : dir) + "/dot";
+    if (::access(candidate.c_str(), X_OK) == 0) return candidate;
+  }
+  return {};
+}
+
+// Removes its file when it goes out of scope.
+struct TempFile {
+  std::string path;
+  TempFile() {
+    std::string tmpl = (std::filesystem::temp_directory_path() / "swarmcheck-dot-XXXXXX").string();
+    const int fd = ::mkstemp(tmpl.data());
+    if (fd < 0) throw InputError(tmpl, "cannot create a temporary file for dot");
+    ::close(fd);
+    path = tmpl;
+  }
+  ~TempFile() { std::filesystem::remove(path); }
+};
+
+}  // namespace
+
+bool dot_available() { return !find_dot().empty(); }
+
+std::string styled_dot(const swarmcheck::supervisor::Automaton& a) {
+  std::string out =
+      "digraph fsm {\n  rankdir=LR;\n  bgcolor=\"transparent\";\n"
+      "  node [shape=circle, fontname=\"DejaVu Sans\", fontsize=11, style=filled, fillcolor=\"#ffffff\", color=\"#334155\"];\n"
+      "  edge [fontname=\"DejaVu Sans\", fontsize=10, arrowsize=0.7];\n";
+  if (!a.states.empty())
+    out += "  __start [shape=point, width=0.08, label=\"\"];\n  __start -> " + quoted(a.states.front()) +
+           " [color=\"#334155\"];\n";
+  for (const auto& q : a.states) {
+    out += "  " + quoted(q) + " [id=" + quoted("state:" + q);
+    if (a.marked.count(q)) out += ", shape=doublecircle, fillcolor=\"#e0f2fe\"";
+    if (!a.states.empty() && q == a.states.front()) out += ", penwidth=2";
+    out += "];\n";
+  }
+  for (const auto& q : a.states) {
+    const auto row = a.delta.find(q);
+    if (row == a.delta.end()) continue;
+    for (const auto& [e, target] : row->second) {
+      const bool c = a.events.at(e).controllable;
+      out += "  " + quoted(q) + " -> " + quoted(target) + " [label=" + quoted(e) + ", id=" +
+             quoted("edge:" + q + "|" + e) + ", class=" + quoted(c ? "c" : "uc");
+      out += c ? ", color=\"#1d4ed8\", fontcolor=\"#1d4ed8\", dir=both, arrowtail=tee"
+               : ", color=\"#b91c1c\", fontcolor=\"#b91c1c\", style=dashed";
+      out += "];\n";
+    }
+  }
+  return out + "}\n";
+}
+
+std::string fsm_svg(const swarmcheck::supervisor::Automaton& a) {
+  const std::string dot = find_dot();
+  if (dot.empty())
+    throw InputError("graphviz", "the `dot` program is not installed (Debian: apt-get install graphviz); "
+                                 "it lays out automata for `view` and `fsm export --to svg`");
+  TempFile in, out;
+  {
+    std::ofstream f(in.path);
+    f << styled_dot(a);
+  }
+  const std::string cmd = "'" + dot + "' -Tsvg -o '" + out.path + "' '" + in.path + "' 2>&1";
+  std::FILE* p = ::popen(cmd.c_str(), "r");
+  if (!p) throw InputError("graphviz", "cannot start dot");
+  std::string messages;
+  char buf[512];
+  while (std::fgets(buf, sizeof buf, p)) messages += buf;
+  const int status = ::pclose(p);
+  if (status != 0) throw InputError("graphviz", "dot failed: " + messages);
+  std::ifstream svg(out.path);
+  std::stringstream text;
+  text << svg.rdbuf();
+  std::string s = text.str();
+  const std::size_t at = s.find("<svg");   // drop the XML prolog and DOCTYPE
+  SWARM_DEMAND(at != std::string::npos);
+  return s.substr(at);
+}
+
+}  // namespace swarmcheck::views

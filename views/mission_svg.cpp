@@ -1,0 +1,101 @@
+#include "views/mission_svg.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <fmt/format.h>
+
+#include "spec/util/demand.hpp"
+#include "views/svg.hpp"
+
+namespace swarmcheck::views {
+namespace {
+
+using swarmcheck::mission::Point;
+
+struct Box {
+  double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300;
+  void add(const Point& p) {
+    x0 = std::min(x0, p[0]);
+    y0 = std::min(y0, p[1]);
+    x1 = std::max(x1, p[0]);
+    y1 = std::max(y1, p[1]);
+  }
+};
+
+constexpr double kPlotPx = 560.0, kMargin = 20.0, kTop = 56.0;
+
+}  // namespace
+
+MissionPathRecorder::MissionPathRecorder(std::size_t robots, swarmcheck::mission::RunObserver* next)
+    : next_(next), paths_(robots) {}
+
+void MissionPathRecorder::on_event(const swarmcheck::mission::EventRecord& e) {
+  if (next_) next_->on_event(e);
+}
+
+void MissionPathRecorder::on_step(const swarmcheck::mission::StepRecord& s) {
+  if (next_) next_->on_step(s);
+  SWARM_DEMAND(s.positions.size() == paths_.size());
+  for (std::size_t k = 0; k < paths_.size(); ++k) {
+    auto& path = paths_[k];
+    const Point& p = s.positions[k];
+    if (path.size() >= 2 && std::hypot(path.back()[0] - p[0], path.back()[1] - p[1]) < 0.02) continue;
+    path.push_back(p);
+  }
+}
+
+std::string mission_svg(const MissionPicture& p) {
+  SWARM_DEMAND(p.mission != nullptr);
+  const auto& m = *p.mission;
+  Box b;
+  for (const auto& g : m.regions) { b.add(g.lo); b.add(g.hi); }
+  for (const auto& t : m.tasks) b.add(t.at);
+  for (const auto& r : m.robots) b.add(r.start);
+  for (const auto& path : p.paths) for (const auto& q : path) b.add(q);
+  const double span = std::max({b.x1 - b.x0, b.y1 - b.y0, 1e-9});
+  const double pad = 0.05 * span;
+  const double scale = kPlotPx / (span + 2 * pad);
+  const double w = (b.x1 - b.x0 + 2 * pad) * scale, h = (b.y1 - b.y0 + 2 * pad) * scale;
+  auto X = [&](double x) { return kMargin + (x - b.x0 + pad) * scale; };
+  auto Y = [&](double y) { return kTop + (b.y1 + pad - y) * scale; };
+  std::string out = fmt::format(
+      "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{0}\" height=\"{1}\" viewBox=\"0 0 {0} {1}\" "
+      "font-family=\"DejaVu Sans, sans-serif\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n",
+      num(std::max(w + 2 * kMargin, 420.0)), num(h + kTop + kMargin));
+  out += fmt::format("<text x=\"{}\" y=\"22\" font-size=\"15\" font-weight=\"bold\">{}</text>\n", num(kMargin), xml_escape(p.title));
+  out += fmt::format("<text x=\"{}\" y=\"42\" font-size=\"12\" fill=\"#444\">{}</text>\n", num(kMargin), xml_escape(p.subtitle));
+  out += fmt::format("<rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" fill=\"#fafafa\" stroke=\"#ccc\"/>\n", num(kMargin), num(kTop), num(w), num(h));
+  out += "<g class=\"regions\" font-size=\"11\">\n";
+  for (const auto& g : m.regions) {
+    const double rw = (g.hi[0] - g.lo[0]) * scale, rh = (g.hi[1] - g.lo[1]) * scale;
+    out += fmt::format("<rect class=\"region\" x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" fill=\"#dbeafe\" fill-opacity=\"0.6\" "
+                       "stroke=\"#3b82f6\"><title>{}</title></rect>\n",
+                       num(X(g.lo[0])), num(Y(g.hi[1])), num(rw), num(rh), xml_escape(g.name));
+    if (rw >= 60 && rh >= 30)   // a small region's name would cover the task inside it
+      out += fmt::format("<text x=\"{}\" y=\"{}\" fill=\"#1e3a8a\">{}</text>\n", num(X(g.lo[0]) + 3), num(Y(g.hi[1]) + 12), xml_escape(g.name));
+  }
+  out += "</g>\n<g class=\"tasks\" font-size=\"11\">\n";
+  for (const auto& t : m.tasks) {
+    const double x = X(t.at[0]), y = Y(t.at[1]);
+    out += fmt::format("<path class=\"task\" d=\"M{} {}l6 6l-6 6l-6 -6z\" fill=\"#16a34a\"/><text x=\"{}\" y=\"{}\" fill=\"#14532d\">{}</text>\n",
+                       num(x), num(y - 6), num(x + 8), num(y - 6), xml_escape(t.name));
+  }
+  out += "</g>\n<g class=\"robots\" font-size=\"11\">\n";
+  for (std::size_t k = 0; k < m.robots.size(); ++k) {
+    const std::string c = css(kRobotColours[k % kRobotColours.size()]);
+    const Point start = m.robots[k].start;
+    const Point end = k < p.paths.size() && !p.paths[k].empty() ? p.paths[k].back() : start;
+    if (k < p.paths.size() && p.paths[k].size() > 1) {
+      std::string pts;
+      for (const auto& q : p.paths[k]) pts += num(X(q[0])) + "," + num(Y(q[1])) + " ";
+      out += fmt::format("<polyline class=\"path\" points=\"{}\" fill=\"none\" stroke=\"{}\" stroke-width=\"2.5\" stroke-opacity=\"0.85\"/>\n", pts, c);
+    }
+    out += fmt::format("<circle cx=\"{}\" cy=\"{}\" r=\"6\" fill=\"white\" stroke=\"{}\" stroke-width=\"2\"/>\n", num(X(start[0])), num(Y(start[1])), c);
+    out += fmt::format("<circle class=\"robot\" cx=\"{}\" cy=\"{}\" r=\"7\" fill=\"{}\" stroke=\"white\" stroke-width=\"1.5\"/>"
+                       "<text x=\"{}\" y=\"{}\" font-weight=\"bold\" fill=\"{}\">{}</text>\n",
+                       num(X(end[0])), num(Y(end[1])), c, num(X(end[0]) + 9), num(Y(end[1]) + 4), c, xml_escape(m.robots[k].name));
+  }
+  return out + "</g>\n</svg>\n";
+}
+
+}  // namespace swarmcheck::views
