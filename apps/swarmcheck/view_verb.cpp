@@ -1,12 +1,17 @@
 // swarmcheck view: one self-contained HTML file (no network: scripts, styles and data inlined) for
 // an exploration trace, a conformance counterexample, a proof counterexample trace, a mission
-// trace or an .fsm automaton. Bad input: one message, status 2, and no output file.
+// trace, an .fsm automaton, or a DSE results folder. Bad input: one message, status 2, and no
+// output file.
 #include "apps/swarmcheck/view_verb.hpp"
 
 #include <fmt/core.h>
 
+#include <filesystem>
+
 #include "apps/swarmcheck/verb.hpp"
 #include "impl/io/atomic_file.hpp"
+#include "spec/util/input_error.hpp"
+#include "spec/util/json_text.hpp"
 #include "proofs/obligations/handshake_trace.hpp"
 #include "views/view.hpp"
 
@@ -19,7 +24,28 @@ struct ViewCliOptions {
   views::ViewOptions view;
 };
 
+// A `swarmcheck dse` output folder: its report.html already is the self-contained page of the
+// sweep (ranking table, Pareto scatter, one response plot per parameter), written from the same
+// results as results.json, so the view is that page, once the folder is checked to be a DSE's.
+int view_dse_folder(const ViewCliOptions& o) {
+  const std::filesystem::path dir(o.file);
+  const std::string results_path = (dir / "results.json").string();
+  if (!std::filesystem::is_regular_file(dir / "results.json"))
+    throw InputError(o.file, "a folder to view must be a `swarmcheck dse` output folder, with results.json");
+  const json_io::Json results = json_io::parse_json_text(views::read_text_file(results_path, "DSE results"), results_path);
+  if (!results.is_object() || results.value("format", json_io::Json()) != "swarmcheck-dse-results")
+    throw InputError(results_path, "format: expected \"swarmcheck-dse-results\" (a file `swarmcheck dse` writes)");
+  const std::string report_path = (dir / "report.html").string();
+  if (!std::filesystem::is_regular_file(dir / "report.html"))
+    throw InputError(report_path, "missing: rerun `swarmcheck dse` with -o " + o.file + " (it resumes from its journal)");
+  io::write_file_atomically(o.out, views::read_text_file(report_path, "DSE report"));
+  const std::size_t points = results.contains("points") && results["points"].is_array() ? results["points"].size() : 0;
+  fmt::print("{}: dse view of {} ({} design points)\n", o.out, o.file, points);
+  return 0;
+}
+
 int run_view(const ViewCliOptions& o) {
+  if (std::filesystem::is_directory(o.file)) return view_dse_folder(o);
   const std::string text = views::read_text_file(o.file, "file to view");
   const views::ViewKind kind = views::detect_view_kind(text, o.file);
   views::Page page;
@@ -39,8 +65,10 @@ int run_view(const ViewCliOptions& o) {
 void add_view_verb(CLI::App& app, int& exit_code) {
   auto o = std::make_shared<ViewCliOptions>();
   CLI::App* cmd = app.add_subcommand(
-      "view", "Write a self-contained HTML view of a trace (run, conform, prove, mission) or an .fsm automaton");
-  cmd->add_option("file", o->file, "The trace (.jsonl) or automaton (.fsm)")->required()->check(CLI::ExistingFile);
+      "view", "Write a self-contained HTML view of a trace (run, conform, prove, mission), an .fsm automaton or a DSE output folder");
+  cmd->add_option("file", o->file, "The trace (.jsonl), automaton (.fsm) or `swarmcheck dse` output folder")
+      ->required()
+      ->check(CLI::ExistingPath);
   cmd->add_option("-o,--output", o->out, "The HTML file to write")->required();
   cmd->add_option("--max-records", o->view.max_records, "Longer traces are thinned evenly to this many records")
       ->capture_default_str();

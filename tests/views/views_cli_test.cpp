@@ -95,3 +95,31 @@ TEST(ViewsCli, ServeRefusesABadPort) {
   EXPECT_EQ(r.status, 2);
   EXPECT_EQ(r.out, "swarmcheck: error: --port: expected an integer in [0, 65535], got 70000\n");
 }
+
+TEST(ViewsCli, ViewOfADseFolderIsItsReportAndAnyOtherFolderIsStatus2) {
+  const fs::path d = scratch();
+  const std::string dse = (d / "dse").string();
+  const auto sweep = run_binary(kBin, "dse " + kSource + "/scenarios/thesis/dse/ertu.dse.json --scenario " + kSource +
+                                          "/scenarios/thesis/dse/base.json -o " + dse);
+  ASSERT_EQ(sweep.status, 0) << sweep.out;
+  const std::string out = (d / "dse-view.html").string();
+  const auto view = run_binary(kBin, "view " + dse + " -o " + out);
+  ASSERT_EQ(view.status, 0) << view.out;
+  EXPECT_EQ(view.out, out + ": dse view of " + dse + " (8 design points)\n");
+  std::ifstream page(out), report(dse + "/report.html");
+  const std::string page_text((std::istreambuf_iterator<char>(page)), {});
+  const std::string report_text((std::istreambuf_iterator<char>(report)), {});
+  EXPECT_EQ(page_text, report_text);
+  EXPECT_NE(page_text.find("Pareto"), std::string::npos);
+
+  const fs::path other = d / "not-dse";
+  fs::create_directories(other);
+  const auto refused = run_binary(kBin, "view " + other.string() + " -o " + (d / "o.html").string());
+  EXPECT_EQ(refused.status, 2);
+  EXPECT_EQ(refused.out, "swarmcheck: error: " + other.string() +
+                             ": a folder to view must be a `swarmcheck dse` output folder, with results.json\n");
+  write(other / "results.json", R"({"format": "swarmcheck-trace"})");
+  const auto wrong = run_binary(kBin, "view " + other.string() + " -o " + (d / "o.html").string());
+  EXPECT_EQ(wrong.status, 2) << wrong.out;
+  EXPECT_FALSE(fs::exists(d / "o.html"));
+}
