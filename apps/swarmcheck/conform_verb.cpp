@@ -261,7 +261,7 @@ void add_conform_verb(CLI::App& app, int& exit_code) {
   cmd->add_option("--system", a->system, "all | exploration | automata | missions")
       ->check(CLI::IsMember({"all", "exploration", "automata", "missions"}))
       ->capture_default_str();
-  cmd->add_option("--seed", a->options.seed, "The campaign's one seed")->capture_default_str();
+  cmd->add_option("--seed", a->options.seed, "The campaign's one seed")->capture_default_str()->check(seed_validator());
   cmd->add_option("--max-steps", a->options.max_steps, "Steps per case (cosim cases: 3x)")->capture_default_str();
   cmd->add_option("--out", a->options.out_dir, "Folder for counterexample traces")->capture_default_str();
   cmd->add_flag("--json", a->json, "Print the report as one JSON object");

@@ -18,6 +18,7 @@ struct EditOptions {
 };
 
 int run_edit(const EditOptions& o) {
+  io::refuse_output_that_is_an_input(o.out, {o.file});
   const views::Page page = views::edit_page(o.file);
   io::write_file_atomically(o.out, views::assemble_page(page));
   fmt::print("{}: {} for {}\n", o.out, page.data["kind"].get<std::string>() == "editor" ? "scenario editor" : "mission editor",

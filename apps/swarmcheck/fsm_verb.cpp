@@ -176,7 +176,15 @@ void add_fsm_verb(CLI::App& app, int& exit_code) {
   fsm->require_subcommand(1);
   auto o = std::make_shared<FsmOptions>();
   auto wire = [&exit_code, o](CLI::App* sub, int (*body)(const FsmOptions&)) {
-    sub->callback([&exit_code, o, body] { exit_code = guarded([&] { return body(*o); }); });
+    sub->callback([&exit_code, o, body] {
+      exit_code = guarded([&] {
+        std::vector<std::string> inputs = o->files;
+        inputs.insert(inputs.end(), o->plants.begin(), o->plants.end());
+        inputs.insert(inputs.end(), o->specs.begin(), o->specs.end());
+        impl::io::refuse_output_that_is_an_input(o->out, inputs);
+        return body(*o);
+      });
+    });
   };
 
   auto* check = fsm->add_subcommand(

@@ -94,6 +94,8 @@ int run_plan(const PlanOptions& o) {
 }
 
 int run_run(const RunOptions& o) {
+  impl::io::refuse_output_that_is_an_input(o.trace, {o.file});
+  impl::io::refuse_output_that_is_an_input(o.svg, {o.file, o.trace});
   const sm::Mission m = sm::load_mission(o.file);
   sm::RunOptions ro;
   if (o.body == "kinematic") ro.body = sm::BodyModel::kinematic;

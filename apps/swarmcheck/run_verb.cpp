@@ -98,6 +98,8 @@ void print_summary(const Scenario& s, const RunOptions& o, const cx::Simulation&
 
 // Runs either engine (the library, or the reference model through the harness).
 int run_with(conformance::exploration::Simulation& sim, const Scenario& s, const RunOptions& o) {
+  impl::io::refuse_output_that_is_an_input(o.trace_path, {o.scenario_path});
+  impl::io::refuse_output_that_is_an_input(o.svg_path, {o.scenario_path, o.trace_path});
   std::unique_ptr<impl::io::AtomicFile> trace;
   if (!o.trace_path.empty()) trace = std::make_unique<impl::io::AtomicFile>(o.trace_path);
   views::RunRecorder recorder(s, {o.trace_field, o.svg_path, o.scenario_path.empty() ? "default scenario" : o.scenario_path},
@@ -145,7 +147,7 @@ void add_run_verb(CLI::App& app, int& exit_code) {
   cmd->add_option("--rule", opts->rule,
                   "The rule set (overrides the file)")
       ->check(CLI::IsMember(rules));
-  cmd->add_option("--seed", opts->seed, "The run's one seed (overrides the file)");
+  cmd->add_option("--seed", opts->seed, "The run's one seed (overrides the file)")->check(seed_validator());
   cmd->add_option("--steps", opts->steps, "Master steps at most (overrides max_steps)");
   cmd->add_option("--trace", opts->trace_path, "Write the JSON Lines trace to FILE");
   cmd->add_option("--trace-every", opts->trace_every, "Record every K-th step in the trace")

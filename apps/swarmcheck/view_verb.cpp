@@ -45,6 +45,7 @@ int view_dse_folder(const ViewCliOptions& o) {
 }
 
 int run_view(const ViewCliOptions& o) {
+  impl::io::refuse_output_that_is_an_input(o.out, {o.file, o.view.mission_path});
   if (std::filesystem::is_directory(o.file)) return view_dse_folder(o);
   const std::string text = views::read_text_file(o.file, "file to view");
   const views::ViewKind kind = views::detect_view_kind(text, o.file);

@@ -39,8 +39,10 @@ namespace {
 Json parse_line(const std::string& text, const std::string& where) {
   try {
     return Json::parse(text);
-  } catch (const nlohmann::json::parse_error& e) {
+  } catch (const nlohmann::json::parse_error&) {
     throw InputError(where, "not valid JSON");
+  } catch (const nlohmann::json::out_of_range&) {   // 1e400: no double holds it
+    throw InputError(where, "a number outside the range of a double");
   }
 }
 

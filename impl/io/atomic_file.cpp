@@ -66,4 +66,14 @@ void write_file_atomically(const std::string& path, const std::string& content) 
   f.commit();
 }
 
+void refuse_output_that_is_an_input(const std::string& output, const std::vector<std::string>& inputs) {
+  if (output.empty()) return;
+  for (const std::string& input : inputs) {
+    if (input.empty()) continue;
+    std::error_code ec;
+    if (output == input || std::filesystem::equivalent(output, input, ec))
+      throw InputError(output, "is also an input of this command (" + input + "): choose another output file");
+  }
+}
+
 }  // namespace swarmcheck::impl::io

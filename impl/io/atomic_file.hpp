@@ -10,6 +10,7 @@
 //   out.commit();                       // or: write_file_atomically(path, text)
 #include <fstream>
 #include <string>
+#include <vector>
 
 namespace swarmcheck::impl::io {
 
@@ -34,6 +35,10 @@ class AtomicFile {
 
 // The whole content at once, atomically.
 void write_file_atomically(const std::string& path, const std::string& content);
+
+// InputError when `output` names the same file as one of `inputs` (by path or through a link):
+// a command would otherwise replace the file it reads. Empty paths are ignored.
+void refuse_output_that_is_an_input(const std::string& output, const std::vector<std::string>& inputs);
 
 }  // namespace swarmcheck::impl::io
 

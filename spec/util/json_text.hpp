@@ -8,25 +8,38 @@
 
 namespace swarmcheck::json_io {
 
+// "file:line:col" of the byte at offset `byte` (1-based) of text.
+inline std::string text_position(const std::string& text, std::size_t byte, const std::string& file) {
+  std::size_t line = 1, col = 1;
+  for (std::size_t k = 0; k + 1 < byte && k < text.size(); ++k) {
+    if (text[k] == '\n') {
+      ++line;
+      col = 1;
+    } else {
+      ++col;
+    }
+  }
+  return file + ":" + std::to_string(line) + ":" + std::to_string(col);
+}
+
 inline Json parse_json_text(const std::string& text, const std::string& file) {
   try {
     return Json::parse(text);
   } catch (const nlohmann::json::parse_error& e) {
     // Locate the byte nlohmann stopped at as line:column, and keep its reason.
-    std::size_t line = 1, col = 1;
-    for (std::size_t k = 0; k + 1 < e.byte && k < text.size(); ++k) {
-      if (text[k] == '\n') {
-        ++line;
-        col = 1;
-      } else {
-        ++col;
-      }
-    }
     std::string reason = e.what();
     if (auto pos = reason.find(": ", reason.find("column")); pos != std::string::npos)
       reason = reason.substr(pos + 2);
-    throw InputError(file + ":" + std::to_string(line) + ":" + std::to_string(col),
-                     "not valid JSON: " + reason);
+    throw InputError(text_position(text, e.byte, file), "not valid JSON: " + reason);
+  } catch (const nlohmann::json::out_of_range& e) {
+    // A number no double holds (1e400, a 50-digit integer): nlohmann names the literal, not
+    // where it is, so find the literal in the text.
+    const std::string what = e.what();
+    const std::size_t open = what.find('\''), close = what.rfind('\'');
+    const std::string literal = open != std::string::npos && close > open ? what.substr(open + 1, close - open - 1) : "";
+    const std::size_t at = literal.empty() ? std::string::npos : text.find(literal);
+    throw InputError(at == std::string::npos ? file : text_position(text, at + 1, file),
+                     "a number outside the range of a double" + (literal.empty() ? std::string() : " (" + literal + ")"));
   }
 }
 

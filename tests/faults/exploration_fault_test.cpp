@@ -12,17 +12,17 @@
 
 using namespace swarmcheck::conformance::exploration;
 
-#ifndef SWARMCHECK_FAULT
-#error "compile with -DSWARMCHECK_FAULT=\"<fault name>\""
-#endif
+// The fault this executable carries: one generated line per fault (tests/faults/CMakeLists.txt),
+// so this file is compiled once per subsystem and linked with every variant.
+extern const char* const kFaultName;
 
 TEST(Mutation, ConformCatchesTheInjectedFaultWithAMinimalReplayableTrace) {
   ConformOptions o;   // the default case budget and seed
   o.out_dir = (std::filesystem::temp_directory_path() /
-               (std::string("swarmcheck-fault-") + SWARMCHECK_FAULT + "-" + std::to_string(::getpid())))
+               (std::string("swarmcheck-fault-") + kFaultName + "-" + std::to_string(::getpid())))
                   .string();
   const ConformReport r = run_conform(o);
-  ASSERT_TRUE(r.counterexample.has_value()) << "fault " << SWARMCHECK_FAULT << " survived "
+  ASSERT_TRUE(r.counterexample.has_value()) << "fault " << kFaultName << " survived "
                                             << r.cases_run << " cases";
   const Counterexample& cx = *r.counterexample;
   ASSERT_TRUE(std::filesystem::exists(cx.trace_path));
@@ -39,7 +39,7 @@ TEST(Mutation, ConformCatchesTheInjectedFaultWithAMinimalReplayableTrace) {
   const auto& s = cx.minimal.scenario;
   std::printf("fault %s: caught after %d cases; shrunk %d times to map %d, %zu robots, %zu obstacles, "
               "%s/%s; trace %lld steps; %s\n",
-              SWARMCHECK_FAULT, r.cases_run, cx.shrinks, s.map_size, s.robots.size(), s.obstacles.size(),
+              kFaultName, r.cases_run, cx.shrinks, s.map_size, s.robots.size(), s.obstacles.size(),
               swarmcheck::json_io::enum_to_string(s.rule).c_str(), swarmcheck::json_io::enum_to_string(s.mode).c_str(),
               static_cast<long long>(cx.divergence.step), cx.divergence.describe().c_str());
   std::filesystem::remove_all(o.out_dir);

@@ -11,9 +11,9 @@
 #include "conformance/mission/campaign.hpp"
 #include "swarmcheck/mission.hpp"
 
-#ifndef SWARMCHECK_FAULT
-#error "compile with -DSWARMCHECK_FAULT=\"<fault name>\""
-#endif
+// The fault this executable carries: one generated line per fault (tests/faults/CMakeLists.txt),
+// so this file is compiled once per subsystem and linked with every variant.
+extern const char* const kFaultName;
 
 using namespace swarmcheck::conformance::mission;
 
@@ -21,10 +21,10 @@ TEST(Mutation, TheMissionCampaignCatchesTheInjectedFaultWithAMinimalCounterexamp
   CampaignOptions o;   // the default budget and seed, as `swarmcheck conform --system missions`
   o.seed = swarmcheck::conformance::derive_seed(1, "missions");
   o.out_dir = (std::filesystem::temp_directory_path() /
-               (std::string("swarmcheck-fault-") + SWARMCHECK_FAULT + "-" + std::to_string(::getpid())))
+               (std::string("swarmcheck-fault-") + kFaultName + "-" + std::to_string(::getpid())))
                   .string();
   const CampaignReport r = run_campaign(o);
-  ASSERT_TRUE(r.counterexample.has_value()) << "fault " << SWARMCHECK_FAULT << " survived " << r.cases_run << " cases";
+  ASSERT_TRUE(r.counterexample.has_value()) << "fault " << kFaultName << " survived " << r.cases_run << " cases";
   const auto& cx = *r.counterexample;
   const swarmcheck::mission::Mission m = swarmcheck::mission::load_mission(cx.mission_path);   // it loads
   EXPECT_EQ(m.fsm.states.size(), cx.fsm_states);
@@ -33,7 +33,7 @@ TEST(Mutation, TheMissionCampaignCatchesTheInjectedFaultWithAMinimalCounterexamp
   EXPECT_EQ(again.counterexample->difference, cx.difference);
   EXPECT_EQ(again.cases_run, r.cases_run);
   std::printf("fault %s: caught after %d cases; %s case shrunk %d times to %zu robots, %zu tasks, %zu FSM states; %s\n",
-              SWARMCHECK_FAULT, r.cases_run, cx.kind.c_str(), cx.shrinks, cx.robots, cx.tasks, cx.fsm_states,
+              kFaultName, r.cases_run, cx.kind.c_str(), cx.shrinks, cx.robots, cx.tasks, cx.fsm_states,
               cx.difference.c_str());
   std::filesystem::remove_all(o.out_dir);
 }
