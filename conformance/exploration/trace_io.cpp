@@ -110,7 +110,9 @@ ReplayResult replay_with(Sim& sim, std::ifstream& in, const std::string& path, R
     try {
       const Json j = parse_line(line, where);
       if (j.is_object() && j.value("type", "") == "field") continue;  // format 2: field records
-      json_io::from_json(j, "", expected);
+      json_io::from_json(j, "", expected);             // wrong types and unknown keys first,
+      json_io::require_complete<StepRecord>(j, "");    // then nothing left out
+
     } catch (const InputError& e) {
       throw InputError(where, std::string("expected a step record: ") + e.what());
     }

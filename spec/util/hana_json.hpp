@@ -7,6 +7,9 @@
 //                                        value supplies what is missing); unknown keys, wrong
 //                                        types and out-of-range integers throw InputError
 //                                        naming the JSON path, e.g. "params.a1" or "robots[2][0]".
+//   require_complete<T>(json, path)   -> InputError naming the first member (at any depth) that
+//                                        `json` leaves out: for records that must be whole, such
+//                                        as a trace's, where a default would hide a missing field
 //   field_names<T>()                  -> the member names, in order
 //
 // Enums are written as strings through EnumNames<E> (a specialisation lists the pairs).
@@ -215,6 +218,25 @@ std::vector<std::string> field_names() {
     names.emplace_back(boost::hana::to<const char*>(boost::hana::first(pair)));
   });
   return names;
+}
+
+template <class T>
+void require_complete(const Json& j, const std::string& path) {
+  if constexpr (is_hana_struct<T>) {
+    if (!j.is_object()) return;   // from_json names the wrong type
+    boost::hana::for_each(boost::hana::accessors<T>(), [&](auto pair) {
+      const char* name = boost::hana::to<const char*>(boost::hana::first(pair));
+      using Member = std::decay_t<decltype(boost::hana::second(pair)(std::declval<T&>()))>;
+      const auto it = j.find(name);
+      if (it == j.end()) throw InputError(join_key(path, name), "missing (a record must have every field)");
+      require_complete<Member>(*it, join_key(path, name));
+    });
+  } else if constexpr (IsVector<T>::value || IsArray<T>::value) {
+    if (!j.is_array()) return;
+    for (std::size_t i = 0; i < j.size(); ++i) require_complete<typename T::value_type>(j[i], join_index(path, i));
+  } else if constexpr (IsOptional<T>::value) {
+    if (!j.is_null()) require_complete<typename T::value_type>(j, path);
+  }
 }
 
 }  // namespace swarmcheck::json_io

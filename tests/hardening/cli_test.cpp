@@ -79,3 +79,25 @@ TEST(Hardening, AnOutputThatIsAlsoAnInputIsRefusedAndTheInputKept) {
   EXPECT_TRUE(fs::is_symlink(link));
   EXPECT_EQ(run_binary(kBin, "run " + scenario + " --steps 2 --trace " + (d / "t.jsonl").string()).status, 0);
 }
+
+TEST(Hardening, ATraceRecordWithAFieldLeftOutIsRejectedNotReplayedAsAgreeing) {
+  const fs::path d = scratch();
+  const std::string trace = (d / "t.jsonl").string();
+  ASSERT_EQ(run_binary(kBin, "run --steps 3 --trace " + trace).status, 0);
+  const std::string whole = read(trace);
+  ASSERT_EQ(run_binary(kBin, "replay " + trace).status, 0);
+  // The third line is the record of step 1: drop its "visited" member.
+  std::size_t line3 = whole.find('\n', whole.find('\n') + 1) + 1;
+  const std::size_t key = whole.find("\"visited\":", line3);
+  ASSERT_NE(key, std::string::npos);
+  const std::size_t value_end = whole.find_first_of(",}", key + 10);
+  std::string cut = whole;
+  cut.erase(key, value_end + 1 - key);
+  const std::string broken = write(d / "broken.jsonl", cut);
+  const auto r = run_binary(kBin, "replay " + broken);
+  EXPECT_EQ(r.status, 2) << r.out;
+  EXPECT_EQ(r.out, "swarmcheck: error: " + broken + ":3: expected a step record: visited: missing (a record must have every field)\n");
+  const std::string bare = write(d / "bare.jsonl", whole.substr(0, line3) + "{\"step\":0}\n");
+  const auto b = run_binary(kBin, "replay " + bare);
+  EXPECT_EQ(b.status, 2) << b.out;
+}
