@@ -118,10 +118,9 @@ RobotDecision decide(const RuleDescriptor& rules, CellIndex current, std::span<c
     d.occupies = !ch.fallback || rules.fallback_effect == FallbackEffect::occupy_and_mark;
     d.marks = d.occupies;
     d.mark = d.to;
-  } else if (rules.stay == StayEffect::mark_best_visited) {
-    d.marks = true;
-    d.mark = best;
   }
+  // A blocked best and no free candidate: the robot stays and marks nothing, in every rule set
+  // (the thesis's published code; its document's listing marks the best, SPEC.md section 11).
   d.deposit_centre = rules.deposit_centre == DepositCentre::best ? best : (d.moves ? d.to : current);
   return d;
 }

@@ -34,12 +34,6 @@ enum class FallbackEffect {
   move_copy,         // the thesis moved a copy of the cell: position and waypoint only
 };
 
-// What a robot whose best is blocked and who has no free candidate does to the map.
-enum class StayEffect {
-  nothing,             // nothing changes
-  mark_best_visited,   // the thesis marks the blocked best visited (even an obstacle)
-};
-
 // Around which cell a planning robot deposits.
 enum class DepositCentre { robot_cell, best };
 
@@ -55,23 +49,22 @@ struct RuleDescriptor {
   BestRule best;
   FallbackRule fallback;
   FallbackEffect fallback_effect;
-  StayEffect stay;
   DepositCentre deposit_centre;
   Evaporation evaporation;
   // Occupancy (one robot per cell, none on an obstacle) and visited <= free cells hold after
-  // every step; the thesis's copy-moves and stay marks break them, on purpose.
+  // every step; the thesis's copy-moves break them, on purpose.
   bool keeps_occupancy_invariants;
 };
 
 inline constexpr std::array<RuleDescriptor, 3> kRuleSets{{
     {RuleSet::thesis, "thesis", BestRule::thesis_normalised, FallbackRule::first_free,
-     FallbackEffect::move_copy, StayEffect::mark_best_visited, DepositCentre::best,
+     FallbackEffect::move_copy, DepositCentre::best,
      Evaporation::literal_per_step, false},
     {RuleSet::deterministic, "deterministic", BestRule::last_minimum, FallbackRule::first_free,
-     FallbackEffect::occupy_and_mark, StayEffect::nothing, DepositCentre::robot_cell,
+     FallbackEffect::occupy_and_mark, DepositCentre::robot_cell,
      Evaporation::decay_function, true},
     {RuleSet::stochastic, "stochastic", BestRule::uniform_minimum, FallbackRule::uniform_free,
-     FallbackEffect::occupy_and_mark, StayEffect::nothing, DepositCentre::robot_cell,
+     FallbackEffect::occupy_and_mark, DepositCentre::robot_cell,
      Evaporation::decay_function, true},
 }};
 

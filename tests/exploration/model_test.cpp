@@ -104,6 +104,41 @@ TEST(Model, ThesisFallbackMovesACopyAndDepositsAroundTheChosenCell) {
   EXPECT_EQ(fixed.record().visited, 4);
 }
 
+// A boxed robot under `thesis`: robot 0 in the corner (0, 0), walled in by obstacles at (1, 0),
+// (0, 1) and (1, 1). Its best is the obstacle (1, 1) (the diagonal gets the least deposit), which
+// is blocked, and no candidate is free: as in the code that produced the thesis's published runs,
+// it stays, nothing new is visited (the listing marked the obstacle, so eP ran ahead from tick 1),
+// and the deposit still goes around the blocked best.
+TEST(Model, ThesisBoxedRobotStaysMarksNothingAndDepositsAroundTheBlockedBest) {
+  Scenario s = default_scenario();
+  s.map_size = 6;
+  s.obstacles = {{1, 0}, {0, 1}, {1, 1}};
+  s.robots = {{0.5, 0.5}};
+  s.mode = Mode::abstract;
+  s.rule = RuleSet::thesis;
+  ExplorationModel m(s);
+  const double f = 1.0 - 0.1 * 0.1;
+  for (int tick = 1; tick <= 5; ++tick) {
+    const double own_before = m.cell({0, 0}).pheromone;
+    const double diagonal_before = m.cell({1, 1}).pheromone;
+    m.step();
+    const StepRecord r = m.record();
+    EXPECT_EQ(r.robots[0].cell, (CellIndex{0, 0})) << "tick " << tick;
+    EXPECT_EQ(r.robots[0].waypoint, (Point_m{0.5, 0.5})) << "tick " << tick;
+    EXPECT_EQ(r.visited, 1) << "tick " << tick;
+    EXPECT_EQ(r.eP, 1.0 / 33.0 * 100.0) << "tick " << tick;   // the start cell of 33 free
+    for (const CellIndex c : {CellIndex{1, 0}, CellIndex{0, 1}, CellIndex{1, 1}})
+      EXPECT_FALSE(m.cell(c).visited) << "tick " << tick;
+    EXPECT_EQ(m.cell({0, 0}).occupant, 0);
+    // The deposit's centre is a blocked neighbour, never the robot's own cell (+3 there).
+    EXPECT_LT(m.cell({0, 0}).pheromone, own_before * f + 3.0) << "tick " << tick;
+    // On tick 1 the best is the diagonal obstacle (the least initial deposit): it gets the centre's 3.
+    if (tick == 1) {
+      EXPECT_EQ(m.cell({1, 1}).pheromone, diagonal_before * f + 3.0);
+    }
+  }
+}
+
 RC_GTEST_PROP(Model, PheromoneIsNeverNegative, ()) {
   const Scenario s = *gen_scenario();
   ExplorationModel m(s);
