@@ -1,18 +1,17 @@
 #include "views/view.hpp"
 
+#include <algorithm>
 #include <fstream>
 #include <sstream>
 
 #include "spec/util/input_error.hpp"
+#include "spec/util/input_file.hpp"
+#include "spec/util/json_text.hpp"
 
 namespace swarmcheck::views {
 
 std::string read_text_file(const std::string& path, const std::string& what) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path, "cannot open the " + what);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
+  return io_input::read_input_file(path, what);
 }
 
 std::vector<JsonLine> json_lines(const std::string& text, const std::string& path) {
@@ -26,11 +25,7 @@ std::vector<JsonLine> json_lines(const std::string& text, const std::string& pat
     pos = end + 1;
     ++number;
     if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
-    try {
-      out.push_back({number, json_io::Json::parse(line)});
-    } catch (const nlohmann::json::parse_error&) {
-      throw InputError(path + ":" + std::to_string(number), "not valid JSON");
-    }
+    out.push_back({number, json_io::parse_json_text(line, path, number)});
   }
   return out;
 }
@@ -40,20 +35,20 @@ ViewKind detect_view_kind(const std::string& text, const std::string& path) {
   if (first == std::string::npos) throw InputError(path, "empty file: expected a trace or an .fsm automaton");
   if (text[first] != '{') return ViewKind::fsm;
   const std::size_t end = text.find('\n', first);
-  json_io::Json h;
-  try {
-    h = json_io::Json::parse(text.substr(first, end == std::string::npos ? std::string::npos : end - first));
-  } catch (const nlohmann::json::parse_error&) {
-    throw InputError(path + ":1", "not valid JSON (expected a trace header)");
-  }
+  const json_io::Json h = json_io::parse_json_text(
+      text.substr(first, end == std::string::npos ? std::string::npos : end - first), path,
+      1 + static_cast<int64_t>(std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(first), '\n')));
   const std::string expected =
       "expected a trace header: {\"format\": \"swarmcheck-trace\", \"system\": \"exploration\" | "
       "\"handshake\", ...} or {\"format\": \"swarmcheck-mission-trace\", ...}";
   if (!h.is_object()) throw InputError(path + ":1", expected);
-  const std::string format = h.value("format", "");
+  const auto text_of = [&](const char* key) {
+    return h.contains(key) && h[key].is_string() ? h[key].get<std::string>() : std::string();
+  };
+  const std::string format = text_of("format");
   if (format == "swarmcheck-mission-trace") return ViewKind::mission;
   if (format != "swarmcheck-trace") throw InputError(path + ":1", expected);
-  const std::string system = h.value("system", "");
+  const std::string system = text_of("system");
   if (system == "handshake") return ViewKind::handshake;
   if (system == "exploration") return h.contains("divergence") ? ViewKind::counterexample : ViewKind::exploration;
   throw InputError(path + ":1", expected);

@@ -48,7 +48,7 @@ Trace read_trace(const std::string& text, const std::string& path) {
   for (std::size_t k = 1; k < lines.size(); ++k) {
     const std::string at = path + ":" + std::to_string(lines[k].number);
     const Json& j = lines[k].json;
-    if (j.is_object() && j.value("type", "") == "field") {
+    if (json_io::string_member(j, "type") == "field") {
       const DecodedField f = decode_field_record(j, at);
       if (f.map_size != t.scenario.map_size)
         throw InputError(at, fmt::format("field of map_size {}, but the scenario's map is {}", f.map_size, t.scenario.map_size));
@@ -143,7 +143,8 @@ void add_counterexample(Json& data, const Trace& t) {
   const Json& d = t.header["divergence"];
   data["divergence"] = d;
   ExplorationOptions options;
-  if (t.header.contains("impl_options") && t.header["impl_options"].value("grouped", false)) {
+  if (t.header.contains("impl_options") && t.header["impl_options"].is_object() &&
+      t.header["impl_options"].value("grouped", json_io::Json(false)) == json_io::Json(true)) {
     options.parallel_min_robots = 1;
     options.parallel_min_bodies = 1;
   }

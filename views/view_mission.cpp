@@ -19,7 +19,7 @@ Json point(const sm::Point& p) { return Json::array({p[0], p[1]}); }
 
 sm::Mission load_named_mission(const Json& header, const std::string& path, const ViewOptions& o) {
   if (!o.mission_path.empty()) return swarmcheck::mission::load_mission(o.mission_path);
-  const std::string named = header.value("mission", "");
+  const std::string named = json_io::string_member(header, "mission");
   if (named.empty()) throw InputError(path + ":1", "the header names no mission file; give it with --mission FILE");
   if (std::filesystem::exists(named)) return swarmcheck::mission::load_mission(named);
   const auto beside = std::filesystem::path(path).parent_path() / std::filesystem::path(named).filename();

@@ -31,7 +31,7 @@ int run_edit(const EditOptions& o) {
 void add_edit_verb(CLI::App& app, int& exit_code) {
   auto o = std::make_shared<EditOptions>();
   CLI::App* cmd = app.add_subcommand("edit", "Write an HTML editor for a scenario (default: the built-in one) or a mission");
-  cmd->add_option("file", o->file, "SCENARIO.json or MISSION.json")->check(CLI::ExistingFile);
+  cmd->add_option("file", o->file, "SCENARIO.json or MISSION.json");
   cmd->add_option("-o,--output", o->out, "The HTML file to write")->required();
   cmd->callback([o, &exit_code] { exit_code = guarded([&] { return run_edit(*o); }); });
 }

@@ -10,11 +10,18 @@
 #include "apps/swarmcheck/run_verb.hpp"
 #include "apps/swarmcheck/serve_verb.hpp"
 #include "apps/swarmcheck/view_verb.hpp"
+#include "impl/io/interrupt.hpp"
 
 int main(int argc, char** argv) {
+  swarmcheck::impl::io::install_interrupt_cleanup();   // Ctrl-C: temp files removed, exit 130
   CLI::App app{
       "swarmcheck: multi-robot exploration and FSM-supervised missions, simulated and checked"};
   app.require_subcommand(1);
+  app.footer(
+      "Exit status: 0 ok; 1 a negative verdict (a divergence, a blocking or uncontrollable "
+      "supervisor, a run not completed or stalled, a refuted obligation); 2 bad input or a "
+      "request refused (a budget, an output that is an input); 3 internal error (a bug: please "
+      "report it); 130 / 143 interrupted by SIGINT / SIGTERM (outputs left as they were).");
   app.set_version_flag("--version", "swarmcheck 0.1.0");
   int exit_code = 0;
   swarmcheck::cli::add_run_verb(app, exit_code);

@@ -3,16 +3,47 @@
 // exposes `void add_<name>_verb(CLI::App& app, int& exit_code)`, which registers a subcommand
 // whose callback runs the verb inside guarded() and stores its exit status.
 #include <CLI/CLI.hpp>
+#include <unistd.h>
+
 #include <charconv>
+#include <memory>
 #include <cstdint>
 #include <cstdio>
 #include <exception>
 #include <functional>
+#include <new>
 #include <string>
 
+#include "spec/util/budget.hpp"
 #include "spec/util/input_error.hpp"
+#include "spec/util/utf8.hpp"
 
 namespace swarmcheck::cli {
+
+// A message as one short printable line: control bytes and bytes that are not UTF-8 (echoed from
+// a user's file) are written as \xNN, and a message over 400 bytes (a long quoted excerpt) is cut
+// with a note, so one bad input never floods or garbles the terminal.
+inline std::string printable_message(const std::string& text) {
+  constexpr std::size_t kMaxBytes = 400;
+  std::string out;
+  std::size_t k = 0;
+  while (k < text.size() && out.size() < kMaxBytes) {
+    const auto b = static_cast<unsigned char>(text[k]);
+    const std::size_t bad = utf8::first_invalid_byte(std::string_view(text).substr(k, 4));
+    if (b < 0x20 || b == 0x7f || bad == 0) {
+      char esc[8];
+      std::snprintf(esc, sizeof esc, "\\x%02X", b);
+      out += esc;
+      ++k;
+      continue;
+    }
+    const std::size_t len = b < 0x80 ? 1 : b < 0xE0 ? 2 : b < 0xF0 ? 3 : 4;
+    out.append(text, k, len);
+    k += len;
+  }
+  if (k < text.size()) out += " ... (" + std::to_string(text.size() - k) + " more bytes)";
+  return out;
+}
 
 // Runs a verb body. Bad input (InputError) prints one line and gives exit status 2; any other
 // exception is a bug in swarmcheck: it is reported as such with status 3, never a crash.
@@ -20,10 +51,15 @@ inline int guarded(const std::function<int()>& body) {
   try {
     return body();
   } catch (const InputError& e) {
-    std::fprintf(stderr, "swarmcheck: error: %s\n", e.what());
+    std::fprintf(stderr, "swarmcheck: error: %s\n", printable_message(e.what()).c_str());
+    return 2;
+  } catch (const std::bad_alloc&) {
+    // Budgets refuse what is estimated not to fit; this is what they did not foresee.
+    std::fprintf(stderr, "swarmcheck: error: out of memory (lower the input's size, or raise --memory-limit "
+                         "if a budget let it through)\n");
     return 2;
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "swarmcheck: internal error (please report): %s\n", e.what());
+    std::fprintf(stderr, "swarmcheck: internal error (please report): %s\n", printable_message(e.what()).c_str());
     return 3;
   }
 }
@@ -41,6 +77,69 @@ inline CLI::Validator seed_validator() {
         return {};
       },
       "SEED");
+}
+
+// ---- resource budgets (spec/util/budget.hpp) ----------------------------------------------------
+
+// The default memory limit: three quarters of the machine's physical memory.
+inline std::uint64_t default_memory_limit() {
+  const long pages = ::sysconf(_SC_PHYS_PAGES), page = ::sysconf(_SC_PAGE_SIZE);
+  if (pages <= 0 || page <= 0) return std::uint64_t{8} << 30;
+  return static_cast<std::uint64_t>(pages) * static_cast<std::uint64_t>(page) / 4 * 3;
+}
+inline constexpr std::uint64_t kDefaultMaxTraceBytes = std::uint64_t{8} << 30;   // 8 GiB
+
+// "64G", "512M", "1.5G", "2T", "4096" (bytes), with an optional "iB"/"B"; 0 turns a limit off.
+inline std::uint64_t parse_size(const std::string& text, const std::string& flag) {
+  const std::string expected = "expected a size such as 8G, 512M, 1.5T or a number of bytes (0: no limit), got \"" + text + "\"";
+  std::size_t used = 0;
+  double value = 0;
+  try {
+    value = std::stod(text, &used);
+  } catch (const std::exception&) {
+    throw InputError(flag, expected);
+  }
+  std::string unit = text.substr(used);
+  for (const char* suffix : {"iB", "B"})
+    if (unit.size() >= std::char_traits<char>::length(suffix) && unit.ends_with(suffix) && unit != "B") {
+      unit.resize(unit.size() - std::char_traits<char>::length(suffix));
+      break;
+    }
+  if (unit == "B") unit.clear();
+  double scale = 1;
+  if (unit == "K" || unit == "k") scale = 1024.0;
+  else if (unit == "M") scale = 1024.0 * 1024;
+  else if (unit == "G") scale = 1024.0 * 1024 * 1024;
+  else if (unit == "T") scale = 1024.0 * 1024 * 1024 * 1024;
+  else if (!unit.empty()) throw InputError(flag, expected);
+  if (!(value >= 0) || value * scale > 1.8e19) throw InputError(flag, expected);
+  return static_cast<std::uint64_t>(value * scale);
+}
+
+// parse_size while CLI11 parses: its own error type, so a bad size is a usage error (status 2).
+inline std::uint64_t size_option(const std::string& text, const std::string& flag) {
+  try {
+    return parse_size(text, flag);
+  } catch (const InputError& e) {
+    throw CLI::ValidationError(e.what());
+  }
+}
+
+// --memory-limit (and, for verbs that write traces, --max-trace-bytes) on a verb; the values
+// are read into `b` when the command line is parsed.
+inline void add_budget_options(CLI::App* cmd, Budgets& b, bool trace) {
+  b.memory_bytes = default_memory_limit();
+  cmd->add_option_function<std::string>(
+         "--memory-limit", [&b](const std::string& v) { b.memory_bytes = size_option(v, "--memory-limit"); },
+         "Refuse work estimated to need more memory than this (default: 3/4 of physical memory, "
+         "here " + format_bytes(static_cast<double>(b.memory_bytes)) + "; 0: no limit)")
+      ->type_name("SIZE");
+  if (!trace) return;
+  b.trace_bytes = kDefaultMaxTraceBytes;
+  cmd->add_option_function<std::string>(
+         "--max-trace-bytes", [&b](const std::string& v) { b.trace_bytes = size_option(v, "--max-trace-bytes"); },
+         "Refuse a trace estimated to be larger than this (default 8G; 0: no limit)")
+      ->type_name("SIZE");
 }
 
 }  // namespace swarmcheck::cli

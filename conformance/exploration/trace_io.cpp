@@ -1,6 +1,8 @@
 #include "conformance/exploration/trace_io.hpp"
 
+#include <algorithm>
 #include <fstream>
+#include <type_traits>
 
 #include "impl/io/atomic_file.hpp"
 #include "conformance/exploration/observe.hpp"
@@ -9,6 +11,8 @@
 #include "spec/exploration/trace.hpp"
 #include "spec/util/hana_diff.hpp"
 #include "spec/util/input_error.hpp"
+#include "spec/util/input_file.hpp"
+#include "spec/util/json_text.hpp"
 
 namespace swarmcheck::conformance::exploration {
 
@@ -36,14 +40,9 @@ void write_counterexample(const std::string& path, const ExplorationCase& c, con
 
 namespace {
 
-Json parse_line(const std::string& text, const std::string& where) {
-  try {
-    return Json::parse(text);
-  } catch (const nlohmann::json::parse_error&) {
-    throw InputError(where, "not valid JSON");
-  } catch (const nlohmann::json::out_of_range&) {   // 1e400: no double holds it
-    throw InputError(where, "a number outside the range of a double");
-  }
+// One JSON Lines record: errors at path:line:col (nesting, repeated keys, 1e400 included).
+Json parse_line(const std::string& text, const std::string& path, int64_t lineno) {
+  return json_io::parse_json_text(text, path, lineno);
 }
 
 struct TraceHeader {
@@ -55,10 +54,20 @@ struct TraceHeader {
   std::optional<Divergence> derived;
 };
 
+// A member of a header object that must have one JSON type when present (absent: `fallback`).
+template <class T>
+T typed_member(const Json& o, const char* key, T fallback, const std::string& where, const char* expected) {
+  if (!o.is_object() || !o.contains(key)) return fallback;
+  const Json& v = o[key];
+  const bool ok = std::is_same_v<T, bool> ? v.is_boolean() : std::is_same_v<T, std::string> ? v.is_string() : v.is_number_integer();
+  if (!ok) throw InputError(where, std::string("header: ") + key + ": expected " + expected);
+  return v.get<T>();
+}
+
 TraceHeader read_header(const Json& h, const std::string& where) {
-  if (!h.is_object() || h.value("format", "") != "swarmcheck-trace")
+  if (!h.is_object() || typed_member<std::string>(h, "format", "", where, "\"swarmcheck-trace\"") != "swarmcheck-trace")
     throw InputError(where, "expected a swarmcheck trace header ({\"format\": \"swarmcheck-trace\", ...})");
-  if (h.value("system", "") != "exploration")
+  if (typed_member<std::string>(h, "system", "", where, "\"exploration\"") != "exploration")
     throw InputError(where, "expected an exploration trace (\"system\": \"exploration\")");
   if (!h.contains("scenario")) throw InputError(where, "the header has no \"scenario\"");
   TraceHeader t;
@@ -67,14 +76,18 @@ TraceHeader read_header(const Json& h, const std::string& where) {
   } catch (const InputError& e) {
     throw InputError(where, std::string("header: ") + e.what());
   }
-  if (h.contains("impl_options") && h["impl_options"].value("grouped", false)) {
+  if (h.contains("impl_options") && !h["impl_options"].is_object())
+    throw InputError(where, "header: impl_options: expected an object");
+  if (typed_member<bool>(h.value("impl_options", Json::object()), "grouped", false, where, "true or false")) {
     t.options.parallel_min_robots = 1;
     t.options.parallel_min_bodies = 1;
   }
-  if (h.contains("divergence") && h["divergence"].is_object()) {
+  if (h.contains("divergence") && !h["divergence"].is_object())
+    throw InputError(where, "header: divergence: expected an object");
+  if (h.contains("divergence")) {
     const Json& d = h["divergence"];
-    t.recorded = d.value("text", "");
-    const std::string derived_path = d.value("path", "");
+    t.recorded = typed_member<std::string>(d, "text", "", where, "a string");
+    const std::string derived_path = typed_member<std::string>(d, "path", "", where, "a string");
     if (d.contains("step") && d["step"].is_number_integer() && d.contains("model") && d["model"].is_string() &&
         is_derived_path(derived_path))
       t.derived = Divergence{d["step"].get<int64_t>(), derived_path, d["model"].get<std::string>(), "", false};
@@ -102,21 +115,25 @@ ReplayResult replay_with(Sim& sim, std::ifstream& in, const std::string& path, R
                          const std::optional<Divergence>& derived) {
   std::string line;
   int64_t lineno = 1;
+  int64_t last_step = -1;
   while (std::getline(in, line)) {
     ++lineno;
     if (line.empty()) continue;
     const std::string where = path + ":" + std::to_string(lineno);
     StepRecord expected;
+    const Json j = parse_line(line, path, lineno);   // its errors name path:line:col already
     try {
-      const Json j = parse_line(line, where);
-      if (j.is_object() && j.value("type", "") == "field") continue;  // format 2: field records
+      if (json_io::string_member(j, "type") == "field") continue;  // format 2: field records
       json_io::from_json(j, "", expected);             // wrong types and unknown keys first,
       json_io::require_complete<StepRecord>(j, "");    // then nothing left out
 
     } catch (const InputError& e) {
       throw InputError(where, std::string("expected a step record: ") + e.what());
     }
-    if (expected.step < sim.steps()) throw InputError(where, "records are not in increasing step order");
+    if (expected.step < sim.steps() || expected.step <= last_step)
+      throw InputError(where, "records are not in increasing step order (step " + std::to_string(expected.step) +
+                                  " after step " + std::to_string(std::max(last_step, sim.steps())) + ")");
+    last_step = expected.step;
     const StepRecord actual = record_at(sim, expected.step);
     ++result.records;
     if (actual.step != expected.step) {
@@ -128,6 +145,7 @@ ReplayResult replay_with(Sim& sim, std::ifstream& in, const std::string& path, R
       return result;
     }
   }
+  if (result.records == 0) throw InputError(path, "no step records after the header: nothing to replay");
   if (derived) recheck_derived(sim, *derived, result);
   return result;
 }
@@ -135,11 +153,12 @@ ReplayResult replay_with(Sim& sim, std::ifstream& in, const std::string& path, R
 }  // namespace
 
 ReplayResult replay_trace(const std::string& path, Engine engine) {
+  io_input::check_input_file(path, "trace", false);
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path, "cannot open the trace");
   std::string first;
   if (!std::getline(in, first)) throw InputError(path + ":1", "empty file: expected a trace header");
-  const TraceHeader h = read_header(parse_line(first, path + ":1"), path + ":1");
+  const TraceHeader h = read_header(parse_line(first, path, 1), path + ":1");
   ReplayResult result;
   result.recorded = h.recorded;
   const std::unique_ptr<Simulation> sim = make_simulation(engine, h.scenario, h.options);

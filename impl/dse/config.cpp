@@ -6,6 +6,7 @@
 
 #include "spec/exploration/scenario.hpp"
 #include "spec/exploration/types.hpp"
+#include "spec/util/input_file.hpp"
 #include "spec/util/json_text.hpp"
 
 namespace swarmcheck::dse {
@@ -263,11 +264,7 @@ DseConfig parse_dse_config(const std::string& text, const std::string& file) {
 }
 
 DseConfig load_dse_config(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path, "cannot open the DSE configuration");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return parse_dse_config(text.str(), path);
+  return parse_dse_config(io_input::read_input_file(path, "DSE configuration"), path);
 }
 
 const char* function_name(Function f) {

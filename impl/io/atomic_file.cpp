@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <random>
 
+#include "impl/io/interrupt.hpp"
 #include "spec/util/input_error.hpp"
 
 namespace swarmcheck::impl::io {
@@ -35,12 +36,40 @@ bool sync_file(const std::string& path) {
   return ok;
 }
 
+// The file an output path ends up replacing: a symbolic link is followed (the link stays and
+// its target gets the new content); anything but a regular file or a new name is refused,
+// since a FIFO, a device or a folder cannot be replaced whole and atomically.
+std::string output_target(const std::string& path) {
+  if (path.empty()) throw InputError("", "an output path is empty");
+  std::error_code ec;
+  std::string target = path;
+  if (fs::is_symlink(fs::symlink_status(path, ec))) {
+    const fs::path resolved = fs::weakly_canonical(path, ec);
+    if (ec) throw InputError(path, "is a symbolic link that cannot be followed: " + ec.message());
+    target = resolved.string();
+  }
+  const fs::file_status st = fs::status(target, ec);
+  switch (st.type()) {
+    case fs::file_type::not_found:
+    case fs::file_type::regular: return target;
+    case fs::file_type::directory: throw InputError(path, "is a folder; expected a file path for the output");
+    case fs::file_type::fifo: throw InputError(path, "is a FIFO (named pipe), not a regular file: outputs are written whole and atomically; give a file path");
+    case fs::file_type::character:
+    case fs::file_type::block: throw InputError(path, "is a device, not a regular file: outputs are written whole and atomically; give a file path");
+    default: throw InputError(path, "is not a regular file: outputs are written whole and atomically; give a file path");
+  }
+}
+
 }  // namespace
 
-AtomicFile::AtomicFile(std::string path) : path_(std::move(path)), temp_(temp_name_for(path_)) {
-  if (path_.empty()) throw InputError("", "an output path is empty");
+AtomicFile::AtomicFile(std::string path)
+    : path_(std::move(path)), target_(output_target(path_)), temp_(temp_name_for(target_)) {
+  temp_slot_ = register_temp_file(temp_.c_str());
   out_.open(temp_, std::ios::binary | std::ios::trunc);
-  if (!out_) throw InputError(path_, "cannot write this file (does its folder exist, may it be written?)");
+  if (!out_) {
+    release_temp_file(temp_slot_);
+    throw InputError(path_, "cannot write this file (does its folder exist, may it be written?)");
+  }
 }
 
 AtomicFile::~AtomicFile() {
@@ -48,6 +77,7 @@ AtomicFile::~AtomicFile() {
   out_.close();
   std::error_code ignored;
   fs::remove(temp_, ignored);
+  release_temp_file(temp_slot_);
 }
 
 void AtomicFile::commit() {
@@ -55,9 +85,10 @@ void AtomicFile::commit() {
   if (!out_) throw InputError(path_, "writing failed (disk full?)");
   if (!sync_file(temp_)) throw InputError(path_, "writing failed: the data could not be flushed to disk");
   std::error_code ec;
-  fs::rename(temp_, path_, ec);
+  fs::rename(temp_, target_, ec);
   if (ec) throw InputError(path_, "cannot replace the file: " + ec.message());
   committed_ = true;
+  release_temp_file(temp_slot_);
 }
 
 void write_file_atomically(const std::string& path, const std::string& content) {

@@ -3,7 +3,9 @@
 // target's own folder (so the rename cannot cross file systems), is flushed and fsync'ed, and is
 // renamed onto the target only on commit(). Until then the target keeps its old content; an
 // error or an exception removes the temporary file, so a failed command leaves nothing
-// half-written behind. Failures are InputError naming the path.
+// half-written behind. Failures are InputError naming the path. A symbolic link is written
+// through (its target is replaced); a FIFO, device or folder is refused. An interrupting signal
+// removes the temporary file too (interrupt.hpp).
 //
 //   AtomicFile out("trace.jsonl");
 //   out.stream() << ...;
@@ -27,8 +29,10 @@ class AtomicFile {
   void commit();
 
  private:
-  std::string path_;
+  std::string path_;     // as the user named it (messages)
+  std::string target_;   // the file replaced on commit: path_, or the file its link points to
   std::string temp_;
+  int temp_slot_ = -1;   // interrupt.hpp: removed if a signal ends the process first
   std::ofstream out_;
   bool committed_ = false;
 };

@@ -7,15 +7,12 @@
 
 #include "swarmcheck/supervisor.hpp"
 #include "spec/util/input_error.hpp"
+#include "spec/util/input_file.hpp"
 
 namespace swarmcheck::mission {
 
 Mission load_mission(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path, "cannot open the mission file");
-  std::ostringstream text;
-  text << in.rdbuf();
-  const auto decl = parse_mission_text(text.str(), path);
+  const auto decl = parse_mission_text(io_input::read_input_file(path, "mission file"), path);
   const std::filesystem::path fsm_path =
       std::filesystem::path(path).parent_path() / std::filesystem::path(decl.fsm);
   if (!std::filesystem::is_regular_file(fsm_path))

@@ -9,6 +9,7 @@
 #include "impl/io/atomic_file.hpp"
 #include "spec/util/hana_json.hpp"
 #include "spec/util/input_error.hpp"
+#include "spec/util/json_text.hpp"
 #include "swarmcheck/mission.hpp"
 
 namespace swarmcheck::impl::mission {
@@ -59,7 +60,7 @@ MissionTrace read_trace(std::istream& in, const std::string& source) {
     if (line.empty()) continue;
     const std::string where = source + ":" + std::to_string(n);
     try {
-      const Json j = Json::parse(line);
+      const Json j = json_io::parse_json_text(line, source, static_cast<int64_t>(n));
       const std::string type = j.at("type").get<std::string>();
       if (type == "header") {
         t.initial_state = j.at("initial_state").get<std::string>();

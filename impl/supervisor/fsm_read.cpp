@@ -9,6 +9,8 @@
 
 #include "impl/supervisor/fsm_io.hpp"
 #include "spec/util/input_error.hpp"
+#include "spec/util/input_file.hpp"
+#include "spec/util/utf8.hpp"
 
 namespace swarmcheck::impl::supervisor {
 
@@ -68,6 +70,10 @@ class Reader {
     std::string word;
     std::size_t word_col = 0;
     auto end_word = [&] {
+      // Names go into JSON (--json, export): they must be text. The bytes are not echoed.
+      if (const std::size_t bad = utf8::first_invalid_byte(word); bad != std::string_view::npos)
+        fail(line, word_col + bad, "a name that is not valid UTF-8 text (byte " +
+                                       std::to_string(static_cast<unsigned char>(word[bad])) + ")");
       if (!word.empty()) current.push_back({std::move(word), line, word_col});
       word.clear();
     };
@@ -297,12 +303,7 @@ Automaton read_fsm(std::string_view text, const std::string& source) {
 }
 
 Automaton read_fsm_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path, "cannot open the file for reading");
-  std::ostringstream buffer;
-  buffer << in.rdbuf();
-  if (in.bad()) throw InputError(path, "cannot read the file");
-  return read_fsm(buffer.str(), path);
+  return read_fsm(io_input::read_input_file(path, ".fsm file"), path);
 }
 
 }  // namespace swarmcheck::supervisor

@@ -6,6 +6,8 @@
 #include <nlohmann/json.hpp>
 
 #include "spec/util/input_error.hpp"
+#include "spec/util/input_file.hpp"
+#include "spec/util/json_text.hpp"
 
 namespace swarmcheck::proofs::handshake {
 namespace {
@@ -16,11 +18,7 @@ using Json = nlohmann::ordered_json;
 class Line {
  public:
   Line(const std::string& path, int number, const std::string& text) : where_(fmt::format("{}:{}", path, number)) {
-    try {
-      j_ = Json::parse(text);
-    } catch (const Json::parse_error& e) {
-      throw InputError(where_, std::string("not a JSON object (") + e.what() + ")");
-    }
+    j_ = json_io::parse_json_text(text, path, number);   // file:line:col, nesting, repeated keys
     if (!j_.is_object()) throw InputError(where_, "expected a JSON object");
   }
   const std::string& where() const { return where_; }
@@ -103,6 +101,7 @@ std::string write_handshake_trace(const HandshakeTrace& t) {
 }
 
 HandshakeTrace read_handshake_trace(const std::string& path) {
+  io_input::check_input_file(path, "handshake trace", false);
   std::ifstream in(path);
   if (!in) throw InputError(path, "cannot read this file");
   HandshakeTrace t;

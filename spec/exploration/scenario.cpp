@@ -11,6 +11,7 @@
 #include "spec/exploration/neighbourhood.hpp"
 #include "spec/util/demand.hpp"
 #include "spec/util/hana_json.hpp"
+#include "spec/util/input_file.hpp"
 #include "spec/util/json_text.hpp"
 
 namespace swarmcheck::exploration {
@@ -167,11 +168,7 @@ Scenario scenario_from_json(const json_io::Json& j) {
 }
 
 Scenario load_scenario(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path, "cannot open the scenario file");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return parse_scenario(text.str(), path);
+  return parse_scenario(io_input::read_input_file(path, "scenario file"), path);
 }
 
 int64_t free_cell_count(const Scenario& s) {

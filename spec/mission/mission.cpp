@@ -31,9 +31,14 @@ void require_each(const Json& j, const char* list,
     require_keys(j[list][i], json_io::join_index(list, i), keys);
 }
 
+// Coordinates within +-1e9 m (a million km): distances, path lengths and makespans summed from
+// them stay finite and exact enough; 1e200 would square to infinity.
+constexpr double kMaxCoordinate_m = 1e9;
+
 void require_finite(const Point& p, const std::string& path) {
-  if (!std::isfinite(p[0]) || !std::isfinite(p[1]))
-    throw InputError(path, "expected finite coordinates in metres");
+  if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || std::fabs(p[0]) > kMaxCoordinate_m ||
+      std::fabs(p[1]) > kMaxCoordinate_m)
+    throw InputError(path, "expected finite coordinates in metres, each within +-1e9");
 }
 
 MissionDecl decl_from_json(const Json& j) {

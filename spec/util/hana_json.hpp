@@ -32,6 +32,20 @@ namespace swarmcheck::json_io {
 
 using Json = nlohmann::ordered_json;
 
+// JSON text for a user to read: a string that is not UTF-8 (a path the user typed, taken from
+// the system as bytes) is printed with U+FFFD in place of its bad bytes instead of throwing.
+inline std::string dump_text(const Json& j, int indent = -1) {
+  return j.dump(indent, ' ', false, Json::error_handler_t::replace);
+}
+
+// o[key] when o is an object holding a string there, else "" (for sniffing a record's kind:
+// Json::value throws type_error on a member of another type, which is bad input, not a bug).
+inline std::string string_member(const Json& o, const char* key) {
+  if (!o.is_object()) return "";
+  const auto it = o.find(key);
+  return it != o.end() && it->is_string() ? it->get<std::string>() : std::string();
+}
+
 // Specialise with: static constexpr std::array<std::pair<E, std::string_view>, N> names{...};
 template <class E>
 struct EnumNames;

@@ -1,16 +1,21 @@
 #pragma once
 // Parsing a JSON document a user wrote: a syntax error becomes an InputError at file:line:col
 // with nlohmann's reason, and errors found later at a JSON path get the file name in front.
+#include <cstdint>
 #include <string>
 
 #include "spec/util/hana_json.hpp"
 #include "spec/util/input_error.hpp"
+#include "spec/util/json_structure.hpp"
 
 namespace swarmcheck::json_io {
 
 // "file:line:col" of the byte at offset `byte` (1-based) of text.
-inline std::string text_position(const std::string& text, std::size_t byte, const std::string& file) {
-  std::size_t line = 1, col = 1;
+// first_line: the line number of text's first line (a JSON Lines record is one line of a file).
+inline std::string text_position(const std::string& text, std::size_t byte, const std::string& file,
+                                 int64_t first_line = 1) {
+  int64_t line = first_line;
+  std::size_t col = 1;
   for (std::size_t k = 0; k + 1 < byte && k < text.size(); ++k) {
     if (text[k] == '\n') {
       ++line;
@@ -22,15 +27,24 @@ inline std::string text_position(const std::string& text, std::size_t byte, cons
   return file + ":" + std::to_string(line) + ":" + std::to_string(col);
 }
 
-inline Json parse_json_text(const std::string& text, const std::string& file) {
+// Nesting past kMaxJsonDepth and repeated keys are InputErrors too (json_structure.hpp).
+inline Json parse_json_text(const std::string& text, const std::string& file, int64_t first_line = 1) {
+  const JsonStructureFinding structure = scan_json_structure(text);
+  if (structure.too_deep_at != 0)
+    throw InputError(text_position(text, structure.too_deep_at, file, first_line),
+                     "nested deeper than " + std::to_string(kMaxJsonDepth) + " arrays or objects");
   try {
-    return Json::parse(text);
+    Json j = Json::parse(text);
+    if (structure.duplicate_at != 0)
+      throw InputError(text_position(text, structure.duplicate_at, file, first_line),
+                       "the key \"" + structure.duplicate_key + "\" appears twice in one object (each key once)");
+    return j;
   } catch (const nlohmann::json::parse_error& e) {
     // Locate the byte nlohmann stopped at as line:column, and keep its reason.
     std::string reason = e.what();
     if (auto pos = reason.find(": ", reason.find("column")); pos != std::string::npos)
       reason = reason.substr(pos + 2);
-    throw InputError(text_position(text, e.byte, file), "not valid JSON: " + reason);
+    throw InputError(text_position(text, e.byte, file, first_line), "not valid JSON: " + reason);
   } catch (const nlohmann::json::out_of_range& e) {
     // A number no double holds (1e400, a 50-digit integer): nlohmann names the literal, not
     // where it is, so find the literal in the text.
@@ -38,7 +52,7 @@ inline Json parse_json_text(const std::string& text, const std::string& file) {
     const std::size_t open = what.find('\''), close = what.rfind('\'');
     const std::string literal = open != std::string::npos && close > open ? what.substr(open + 1, close - open - 1) : "";
     const std::size_t at = literal.empty() ? std::string::npos : text.find(literal);
-    throw InputError(at == std::string::npos ? file : text_position(text, at + 1, file),
+    throw InputError(at == std::string::npos ? file : text_position(text, at + 1, file, first_line),
                      "a number outside the range of a double" + (literal.empty() ? std::string() : " (" + literal + ")"));
   }
 }

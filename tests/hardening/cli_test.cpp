@@ -50,7 +50,7 @@ TEST(Hardening, ASeedOutsideZeroToTwoToThe64IsRefusedNotWrapped) {
     EXPECT_EQ(r.status, 2) << seed << ": " << r.out;
     EXPECT_NE(r.out.find("--seed: expected an integer in [0, 18446744073709551615], got " + seed), std::string::npos) << r.out;
   }
-  EXPECT_EQ(run_binary(kBin, "run --steps 1 --seed 18446744073709551615").status, 0);
+  EXPECT_EQ(run_binary(kBin, "run --steps 1 --seed 18446744073709551615").status, 1);   // accepted; 1 step does not complete
   EXPECT_EQ(run_binary(kBin, "conform --system exploration --cases 1 --seed -1").status, 2);
 }
 
@@ -77,13 +77,13 @@ TEST(Hardening, AnOutputThatIsAlsoAnInputIsRefusedAndTheInputKept) {
   EXPECT_EQ(read(scenario), before);
   EXPECT_EQ(read(fsm), fsm_before);
   EXPECT_TRUE(fs::is_symlink(link));
-  EXPECT_EQ(run_binary(kBin, "run " + scenario + " --steps 2 --trace " + (d / "t.jsonl").string()).status, 0);
+  EXPECT_EQ(run_binary(kBin, "run " + scenario + " --steps 2 --trace " + (d / "t.jsonl").string()).status, 1);
 }
 
 TEST(Hardening, ATraceRecordWithAFieldLeftOutIsRejectedNotReplayedAsAgreeing) {
   const fs::path d = scratch();
   const std::string trace = (d / "t.jsonl").string();
-  ASSERT_EQ(run_binary(kBin, "run --steps 3 --trace " + trace).status, 0);
+  ASSERT_EQ(run_binary(kBin, "run --steps 3 --trace " + trace).status, 1);
   const std::string whole = read(trace);
   ASSERT_EQ(run_binary(kBin, "replay " + trace).status, 0);
   // The third line is the record of step 1: drop its "visited" member.
