@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "apps/swarmcheck/verb.hpp"
+#include "spec/util/hana_json.hpp"
 #include "conformance/supervisor/engine.hpp"
 #include "views/fsm_svg.hpp"
 #include "impl/io/atomic_file.hpp"
@@ -31,9 +32,10 @@ struct FsmOptions {
   std::string to = "fsm";
   std::string engine = "impl";
   bool json = false;
+  Budgets budgets;   // --memory-limit of product and synth (the impl engine)
 };
 
-void print_json(const Json& j) { fmt::print("{}\n", j.dump(2)); }
+void print_json(const Json& j) { fmt::print("{}\n", json_io::dump_text(j, 2)); }
 
 std::vector<Automaton> read_all(const std::vector<std::string>& paths) {
   std::vector<Automaton> out;
@@ -79,7 +81,7 @@ int run_check(const FsmOptions& o) {
 
 int run_product(const FsmOptions& o) {
   const engines::Engine engine = engines::engine_named(o.engine);
-  const Automaton p = engines::product(read_all(o.files), o.files, engine);
+  const Automaton p = engines::product(read_all(o.files), o.files, engine, o.budgets.memory_bytes);
   sv::write_fsm_file(o.out, p);
   if (o.json)
     print_json({{"output", o.out},
@@ -94,9 +96,9 @@ int run_product(const FsmOptions& o) {
 
 int run_synth(const FsmOptions& o) {
   const engines::Engine engine = engines::engine_named(o.engine);
-  const Automaton plant = engines::product(read_all(o.plants), o.plants, engine);
-  const Automaton spec = engines::product(read_all(o.specs), o.specs, engine);
-  const Automaton sup = engines::supcon(plant, spec, engine);
+  const Automaton plant = engines::product(read_all(o.plants), o.plants, engine, o.budgets.memory_bytes);
+  const Automaton spec = engines::product(read_all(o.specs), o.specs, engine, o.budgets.memory_bytes);
+  const Automaton sup = engines::supcon(plant, spec, engine, o.budgets.memory_bytes);
   const bool controllable = engines::is_controllable(plant, spec, engine);
   sv::write_fsm_file(o.out, sup);
   const bool empty = sup.states.empty();
@@ -199,6 +201,7 @@ void add_fsm_verb(CLI::App& app, int& exit_code) {
   prod->add_option("-o,--output", o->out, "the product .fsm to write")->required();
   prod->add_flag("--json", o->json, "print a JSON summary");
   add_engine(prod, *o);
+  add_budget_options(prod, o->budgets, false);
   wire(prod, run_product);
 
   auto* synth = fsm->add_subcommand(
@@ -208,6 +211,7 @@ void add_fsm_verb(CLI::App& app, int& exit_code) {
   synth->add_option("-o,--output", o->out, "the supervisor .fsm to write")->required();
   synth->add_flag("--json", o->json, "print a JSON summary");
   add_engine(synth, *o);
+  add_budget_options(synth, o->budgets, false);
   wire(synth, run_synth);
 
   auto* exp = fsm->add_subcommand("export", "write an automaton as DOT, JSON, canonical .fsm or SVG");

@@ -10,10 +10,12 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
 #include <memory>
 #include <nlohmann/json.hpp>
 
 #include "apps/swarmcheck/verb.hpp"
+#include "spec/util/hana_json.hpp"
 #include "conformance/mission/engine.hpp"
 #include "swarmcheck/mission.hpp"
 #include "impl/io/atomic_file.hpp"
@@ -40,6 +42,7 @@ struct RunOptions {
   std::string body = "unicycle";
   double dt = 0.05;
   double max_time = 3600.0;
+  Budgets budgets;
   double speed = 0.5;
   bool json = false;
 };
@@ -73,7 +76,7 @@ int run_plan(const PlanOptions& o) {
               {"events", p.events},      {"robots", robots},
               {"makespan", p.found ? Json(p.cost.makespan) : Json(nullptr)},
               {"total", p.found ? Json(p.cost.total) : Json(nullptr)}};
-    fmt::print("{}\n", j.dump(2));
+    fmt::print("{}\n", json_io::dump_text(j, 2));
   } else if (p.found) {
     fmt::print("plan ({} planner) from {} to {}: {} events\n", o.planner, from, p.final_state,
                p.events.size());
@@ -97,6 +100,19 @@ int run_run(const RunOptions& o) {
   impl::io::refuse_output_that_is_an_input(o.trace, {o.file});
   impl::io::refuse_output_that_is_an_input(o.svg, {o.file, o.trace});
   const sm::Mission m = sm::load_mission(o.file);
+  if (!(o.dt > 0) || !std::isfinite(o.dt)) throw InputError("--dt", "expected a step in seconds > 0");
+  if (!(o.max_time > 0) || !std::isfinite(o.max_time)) throw InputError("--max-time", "expected a time in seconds > 0");
+  // Budgets, before anything runs: a step record per dt with each robot's position in the trace
+  // (about 40 bytes a robot), and the paths the picture keeps (16 bytes a robot a step).
+  const double steps = o.max_time / o.dt + 1.0;
+  const double robots = static_cast<double>(m.robots.size());
+  const std::string run_size = "--max-time " + fmt::format("{:g}", o.max_time) + " s at --dt " + fmt::format("{:g}", o.dt) +
+                               " s (" + fmt::format("{:.3g}", steps) + " steps)";
+  if (!o.trace.empty())
+    require_within("--trace " + o.trace, "the trace of " + run_size, steps * (60.0 + 40.0 * robots),
+                   o.budgets.trace_bytes, "--max-trace-bytes");
+  require_within(o.file, "the run's paths over " + run_size, steps * 16.0 * robots, o.budgets.memory_bytes,
+                 "--memory-limit");
   sm::RunOptions ro;
   if (o.body == "kinematic") ro.body = sm::BodyModel::kinematic;
   ro.dt_s = o.dt;
@@ -126,7 +142,7 @@ int run_run(const RunOptions& o) {
               {"makespan_planned", r.makespan_planned},
               {"replans", r.replans},
               {"plan_cache_hits", r.plan_cache_hits}};
-    fmt::print("{}\n", j.dump(2));
+    fmt::print("{}\n", json_io::dump_text(j, 2));
   } else {
     for (const auto& e : r.events)
       fmt::print("  t={:8.2f} s  {:<6} -> {}\n", e.time_s, e.event, e.state_after);
@@ -166,6 +182,7 @@ void add_mission_verb(CLI::App& app, int& exit_code) {
       ->check(CLI::Range(1e-4, 1.0));
   run->add_option("--max-time", ro->max_time, "time limit, s (default 3600)")
       ->check(CLI::Range(0.0, 1e7));
+  add_budget_options(run, ro->budgets, true);
   run->add_option("--speed", ro->speed, "kinematic body speed, m/s (default 0.5)")
       ->check(CLI::Range(1e-3, 100.0));
   run->add_flag("--json", ro->json, "print a JSON summary");

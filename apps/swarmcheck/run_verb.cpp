@@ -13,6 +13,8 @@
 #include "conformance/exploration/engine.hpp"
 #include "conformance/exploration/summary.hpp"
 #include "swarmcheck/exploration.hpp"
+#include "spec/exploration/neighbourhood.hpp"
+#include "spec/exploration/reachability.hpp"
 #include "spec/exploration/scenario.hpp"
 #include "spec/exploration/trace.hpp"
 #include "views/run_recorder.hpp"
@@ -34,6 +36,15 @@ struct RunOptions {
   std::string svg_path;
   std::string engine = "impl";
   bool json = false;
+  int64_t stall_window = 100000;   // master steps without a newly visited cell; 0: never stop
+  Budgets budgets;
+};
+
+// How a run ended, beyond the summary's counters.
+struct RunEnd {
+  Reachability reach;
+  std::string outcome;   // completed | max_steps | stalled
+  std::string stall_reason;
 };
 
 Scenario resolve_scenario(const RunOptions& o) {
@@ -71,11 +82,18 @@ class Progress {
   std::chrono::steady_clock::time_point last_;
 };
 
-void print_summary(const Scenario& s, const RunOptions& o, const cx::Simulation& sim) {
+void print_summary(const Scenario& s, const RunOptions& o, const cx::Simulation& sim, const RunEnd& end) {
+  const int64_t reachable = end.reach.reachable_free_cells;
+  const double eP_reachable = reachable > 0 ? exploration_percent(sim.visited(), reachable) : 100.0;
   if (o.json) {
     json_io::Json j = cx::run_summary(sim);
     j["engine"] = o.engine;
-    fmt::print("{}\n", j.dump());
+    j["outcome"] = end.outcome;
+    j["reachable_cells"] = reachable;
+    j["unreachable_cells"] = end.reach.unreachable_free_cells;
+    j["eP_reachable"] = eP_reachable;
+    if (!end.stall_reason.empty()) j["stalled"] = end.stall_reason;
+    fmt::print("{}\n", json_io::dump_text(j));
     return;
   }
   const auto completion = sim.completion_step();
@@ -90,16 +108,37 @@ void print_summary(const Scenario& s, const RunOptions& o, const cx::Simulation&
     fmt::print("completed at step {} (sTime {:.1f} s): eP {:.2f} %, {} / {} free cells visited, "
                "{} planning steps\n",
                *completion, sTime, eP, visited, free_cells, planning_steps);
+  else if (end.outcome == "stalled")
+    fmt::print("stalled after {} steps ({}): eP {:.2f} %, {} / {} free cells visited, {} planning steps\n",
+               steps, end.stall_reason, eP, visited, free_cells, planning_steps);
   else
     fmt::print("not complete after {} steps (max_steps): eP {:.2f} %, {} / {} free cells "
                "visited, {} planning steps\n",
                steps, eP, visited, free_cells, planning_steps);
+  if (end.reach.unreachable_free_cells > 0)
+    fmt::print("reachable free cells: {} visited of {} ({:.2f} %); {} free cells no robot can reach\n",
+               visited, reachable, eP_reachable, end.reach.unreachable_free_cells);
 }
 
-// Runs either engine (the library, or the reference model through the harness).
-int run_with(conformance::exploration::Simulation& sim, const Scenario& s, const RunOptions& o) {
-  impl::io::refuse_output_that_is_an_input(o.trace_path, {o.scenario_path});
-  impl::io::refuse_output_that_is_an_input(o.svg_path, {o.scenario_path, o.trace_path});
+// The trace's size, estimated from the first record before anything is written: the records
+// (every trace_every steps, at most max_steps) and the field records of --trace-field.
+double estimated_trace_bytes(const Scenario& s, const RunOptions& o, std::size_t first_record_bytes) {
+  const double records = static_cast<double>(s.max_steps) / static_cast<double>(o.trace_every) + 2.0;
+  double bytes = records * static_cast<double>(first_record_bytes + 1);
+  if (o.trace_field > 0) {
+    const double cells = static_cast<double>(s.map_size) * s.map_size;
+    bytes += (static_cast<double>(s.max_steps) / static_cast<double>(o.trace_field) + 1.0) * cells * 5.0;
+  }
+  return bytes;
+}
+
+// Runs either engine (the library, or the reference model through the harness). Status 0 when
+// the run completed, 1 when it stopped at max_steps or stalled.
+int run_with(conformance::exploration::Simulation& sim, const Scenario& s, const RunOptions& o, RunEnd end) {
+  if (!o.trace_path.empty())
+    require_within("--trace " + o.trace_path, "the trace (" + std::to_string(s.max_steps) + " steps at most)",
+                   estimated_trace_bytes(s, o, trace_line(sim.record()).size()), o.budgets.trace_bytes,
+                   "--max-trace-bytes");
   std::unique_ptr<impl::io::AtomicFile> trace;
   if (!o.trace_path.empty()) trace = std::make_unique<impl::io::AtomicFile>(o.trace_path);
   views::RunRecorder recorder(s, {o.trace_field, o.svg_path, o.scenario_path.empty() ? "default scenario" : o.scenario_path},
@@ -110,26 +149,56 @@ int run_with(conformance::exploration::Simulation& sim, const Scenario& s, const
   }
   recorder.observe(sim);
   Progress progress;
+  int64_t last_visited = sim.visited(), last_progress_step = sim.steps();
   while (!sim.done()) {
     sim.step();
-    if (trace && (sim.steps() % o.trace_every == 0 || sim.done())) trace->stream() << trace_line(sim.record()) << '\n';
+    if (sim.visited() != last_visited) {
+      last_visited = sim.visited();
+      last_progress_step = sim.steps();
+    }
+    // Stalled: nothing left a robot can reach, or no new cell for the whole window.
+    if (!sim.completion_step() && end.reach.unreachable_free_cells > 0 && sim.visited() >= end.reach.reachable_free_cells)
+      end.stall_reason = "every reachable free cell is visited; " + std::to_string(end.reach.unreachable_free_cells) +
+                         " free cells are unreachable";
+    else if (o.stall_window > 0 && sim.steps() - last_progress_step >= o.stall_window)
+      end.stall_reason = "no newly visited cell in the last " + std::to_string(o.stall_window) + " steps (--stall-window)";
+    const bool last = sim.done() || !end.stall_reason.empty();
+    if (trace && (sim.steps() % o.trace_every == 0 || last)) trace->stream() << trace_line(sim.record()) << '\n';
     recorder.observe(sim);
     if (sim.steps() % 4096 == 0) progress.update(sim.steps(), sim.eP(), s.max_steps);
+    if (last) break;
   }
   progress.finish();
   recorder.finish(sim);
   if (trace) trace->commit();
-  print_summary(s, o, sim);
-  return 0;
+  end.outcome = sim.completion_step() ? "completed" : !end.stall_reason.empty() ? "stalled" : "max_steps";
+  print_summary(s, o, sim, end);
+  return sim.completion_step() ? 0 : 1;
 }
 
 int run(const RunOptions& o) {
   if (o.trace_every < 1) throw InputError("--trace-every", "expected an integer >= 1");
   if (o.trace_field < 0) throw InputError("--trace-field", "expected an integer >= 1");
   if (o.trace_field > 0 && o.trace_path.empty()) throw InputError("--trace-field", "needs --trace FILE");
+  if (o.stall_window < 0) throw InputError("--stall-window", "expected a number of steps >= 0 (0: never stop early)");
+  impl::io::refuse_output_that_is_an_input(o.trace_path, {o.scenario_path});
+  impl::io::refuse_output_that_is_an_input(o.svg_path, {o.scenario_path, o.trace_path});
   const Scenario s = resolve_scenario(o);
-  const auto sim = cx::make_simulation(o.engine == "model" ? cx::Engine::model : cx::Engine::impl, s);
-  return run_with(*sim, s, o);
+  const std::string where = o.scenario_path.empty() ? "default scenario" : o.scenario_path;
+  const cx::Engine engine = o.engine == "model" ? cx::Engine::model : cx::Engine::impl;
+  // The map's cells (engine), and the reachability check's bit per cell and queue.
+  const double cells = static_cast<double>(s.map_size) * s.map_size;
+  require_within(where, "a " + std::to_string(s.map_size) + " x " + std::to_string(s.map_size) + " map with " +
+                            std::to_string(s.robots.size()) + " robots",
+                 static_cast<double>(cx::estimated_bytes(engine, s)) + cells / 8 + cells * 8,
+                 o.budgets.memory_bytes, "--memory-limit");
+  RunEnd end;
+  end.reach = reachability(s);
+  if (end.reach.unreachable_free_cells > 0)
+    fmt::print(stderr, "swarmcheck run: warning: {} of {} free cells cannot be reached by any robot (walled in); "
+               "eP cannot reach 100 %\n", end.reach.unreachable_free_cells, free_cell_count(s));
+  const auto sim = cx::make_simulation(engine, s);
+  return run_with(*sim, s, o, end);
 }
 
 }  // namespace
@@ -138,8 +207,7 @@ void add_run_verb(CLI::App& app, int& exit_code) {
   auto opts = std::make_shared<RunOptions>();
   CLI::App* cmd = app.add_subcommand(
       "run", "Run one exploration (the built-in thesis set-up when no file is given)");
-  cmd->add_option("scenario", opts->scenario_path, "Scenario file (JSON); see README")
-      ->check(CLI::ExistingFile);
+  cmd->add_option("scenario", opts->scenario_path, "Scenario file (JSON); see README");
   cmd->add_option("--mode", opts->mode, "abstract | cosim (overrides the file)")
       ->check(CLI::IsMember({"abstract", "cosim"}));
   std::vector<std::string> rules;   // the rule sets' table (spec/exploration/rule_set.hpp)
@@ -155,6 +223,10 @@ void add_run_verb(CLI::App& app, int& exit_code) {
   cmd->add_option("--trace-field", opts->trace_field,
                   "Also record the whole pheromone field and the visited set every K steps (trace format 2)");
   cmd->add_option("--svg", opts->svg_path, "Write a picture of the end of the run (coverage, pheromone, paths)");
+  cmd->add_option("--stall-window", opts->stall_window,
+                  "Stop as stalled after this many steps without a newly visited cell (0: never)")
+      ->capture_default_str();
+  add_budget_options(cmd, opts->budgets, true);
   cmd->add_option("--engine", opts->engine, "impl (the optimised library) | model (the reference)")
       ->check(CLI::IsMember({"impl", "model"}))
       ->capture_default_str();

@@ -49,6 +49,11 @@ class ImplSimulation final : public Simulation {
 
 }  // namespace
 
+std::uint64_t estimated_bytes(Engine engine, const Scenario& s) {
+  return engine == Engine::model ? swarmcheck::model::exploration::ExplorationModel::estimated_bytes(s)
+                                 : Exploration::estimated_bytes(s);
+}
+
 std::unique_ptr<Simulation> make_simulation(Engine engine, const Scenario& s, const ExplorationOptions& options) {
   if (engine == Engine::model) return std::make_unique<ModelSimulation>(s);
   return std::make_unique<ImplSimulation>(s, options);

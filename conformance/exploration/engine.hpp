@@ -31,6 +31,9 @@ class Simulation {
   virtual swarmcheck::exploration::Cell cell(swarmcheck::exploration::CellIndex c) const = 0;
 };
 
+// About how many bytes the engine's run of `s` allocates (the memory budget's estimate).
+std::uint64_t estimated_bytes(Engine engine, const swarmcheck::exploration::Scenario& s);
+
 // `s` must be valid; `options` only matter to the impl.
 std::unique_ptr<Simulation> make_simulation(Engine engine, const swarmcheck::exploration::Scenario& s,
                                             const swarmcheck::exploration::ExplorationOptions& options = {});

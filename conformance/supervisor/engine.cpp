@@ -36,8 +36,8 @@ bool is_nonblocking(const Automaton& a, Engine engine) {
 }
 
 Automaton product(const std::vector<Automaton>& parts, const std::vector<std::string>& names,
-                  Engine engine) {
-  return engine == Engine::model ? model::product(parts, names) : lib::product(parts, names);
+                  Engine engine, std::uint64_t max_bytes) {
+  return engine == Engine::model ? model::product(parts, names) : lib::product(parts, names, max_bytes);
 }
 
 bool is_controllable(const Automaton& plant, const Automaton& spec, Engine engine) {
@@ -45,8 +45,8 @@ bool is_controllable(const Automaton& plant, const Automaton& spec, Engine engin
                                  : lib::is_controllable(plant, spec);
 }
 
-Automaton supcon(const Automaton& plant, const Automaton& spec, Engine engine) {
-  return engine == Engine::model ? model::supcon(plant, spec) : lib::supcon(plant, spec);
+Automaton supcon(const Automaton& plant, const Automaton& spec, Engine engine, std::uint64_t max_bytes) {
+  return engine == Engine::model ? model::supcon(plant, spec) : lib::supcon(plant, spec, max_bytes);
 }
 
 lib::Inclusion language_inclusion(const Automaton& a, const Automaton& b, Engine engine) {

@@ -19,10 +19,11 @@ Engine engine_named(const std::string& name);
 
 swarmcheck::supervisor::CheckReport check(const Automaton& a, Engine engine);
 bool is_nonblocking(const Automaton& a, Engine engine);
+// max_bytes: the impl's memory budget (product, supcon); the model, the oracle, has none.
 Automaton product(const std::vector<Automaton>& parts, const std::vector<std::string>& names,
-                  Engine engine);
+                  Engine engine, std::uint64_t max_bytes = 0);
 bool is_controllable(const Automaton& plant, const Automaton& spec, Engine engine);
-Automaton supcon(const Automaton& plant, const Automaton& spec, Engine engine);
+Automaton supcon(const Automaton& plant, const Automaton& spec, Engine engine, std::uint64_t max_bytes = 0);
 swarmcheck::supervisor::Inclusion language_inclusion(const Automaton& a, const Automaton& b,
                                                      Engine engine);
 

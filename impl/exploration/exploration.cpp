@@ -73,6 +73,11 @@ void Exploration::State::place_bodies_on_waypoints() {
   }
 }
 
+std::uint64_t Exploration::estimated_bytes(const Scenario& s) {
+  // Per robot: pose, environment record, planning scratch and candidates (about 256 bytes).
+  return swarmcheck::impl::exploration::LazyGrid::bytes_for(s.map_size) + std::uint64_t{256} * s.robots.size();
+}
+
 Exploration::Exploration(const Scenario& s, ExplorationOptions options, RobotParams robot) {
   validate(s);
   state_ = std::make_unique<State>(s, options, robot);

@@ -23,6 +23,8 @@ using swarmcheck::exploration::CellIndex;
 class LazyGrid {
  public:
   explicit LazyGrid(const swarmcheck::exploration::EnvironmentConfig& cfg);
+  // The bytes the cells of an n x n map take (the memory budget's estimate).
+  static std::uint64_t bytes_for(int32_t n) { return std::uint64_t(n) * std::uint64_t(n) * sizeof(CellData); }
 
   // The grid operations of the spec's Environment step.
   Candidate candidate(CellIndex c, int64_t tick) const {

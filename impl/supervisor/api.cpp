@@ -46,7 +46,8 @@ Automaton accessible_part(const Automaton& a) {
 
 Automaton trim(const Automaton& a) { return is::decompile(is::trim(is::compile(a))); }
 
-Automaton product(const std::vector<Automaton>& parts, const std::vector<std::string>& names) {
+Automaton product(const std::vector<Automaton>& parts, const std::vector<std::string>& names,
+                  std::uint64_t max_bytes) {
   if (parts.empty()) throw InputError("product", "expected at least one automaton");
   std::vector<std::string> named = names;
   for (std::size_t i = named.size(); i < parts.size(); ++i)
@@ -56,15 +57,15 @@ Automaton product(const std::vector<Automaton>& parts, const std::vector<std::st
   for (const auto& a : parts) compiled.push_back(is::compile(a));
   std::vector<const is::Fsm*> ptrs;
   for (const auto& f : compiled) ptrs.push_back(&f);
-  return is::decompile(is::product(ptrs, named));
+  return is::decompile(is::product(ptrs, named, nullptr, max_bytes));
 }
 
 bool is_controllable(const Automaton& plant, const Automaton& spec) {
   return is::is_controllable(is::compile(plant), is::compile(spec));
 }
 
-Automaton supcon(const Automaton& plant, const Automaton& spec) {
-  return is::decompile(is::supcon(is::compile(plant), is::compile(spec)));
+Automaton supcon(const Automaton& plant, const Automaton& spec, std::uint64_t max_bytes) {
+  return is::decompile(is::supcon(is::compile(plant), is::compile(spec), max_bytes));
 }
 
 Inclusion language_inclusion(const Automaton& a, const Automaton& b) {

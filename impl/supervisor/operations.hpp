@@ -22,12 +22,14 @@ bool is_nonblocking(const Fsm& f);
 // The synchronous product of all parts (accessible part), states named "x1.x2...", in
 // breadth-first order with events in name order. `names` name the parts in error messages.
 // `origin`, when given, receives each product state's tuple of component states.
+// max_bytes (0: none): the product stops with a BudgetExceeded once its estimated size passes it,
+// naming the states explored so far.
 Fsm product(const std::vector<const Fsm*>& parts, const std::vector<std::string>& names,
-            std::vector<std::vector<StateId>>* origin = nullptr);
+            std::vector<std::vector<StateId>>* origin = nullptr, std::uint64_t max_bytes = 0);
 
 bool is_controllable(const Fsm& plant, const Fsm& spec);
 // The supremal controllable nonblocking supervisor of plant for spec.
-Fsm supcon(const Fsm& plant, const Fsm& spec);
+Fsm supcon(const Fsm& plant, const Fsm& spec, std::uint64_t max_bytes = 0);
 
 // L(a) in L(b) and Lm(a) in Lm(b), with the spec's shortlex-least witnesses: breadth-first over
 // the accessible pairs (state of a, state of b or none), each pair stored once with its parent

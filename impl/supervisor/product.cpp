@@ -5,6 +5,7 @@
 
 #include "impl/supervisor/operations.hpp"
 #include "spec/util/demand.hpp"
+#include "spec/util/budget.hpp"
 #include "spec/util/input_error.hpp"
 
 namespace swarmcheck::impl::supervisor {
@@ -121,7 +122,7 @@ std::string joined(const std::vector<std::string>& names) {
 }  // namespace
 
 Fsm product(const std::vector<const Fsm*>& parts, const std::vector<std::string>& names,
-            std::vector<std::vector<StateId>>* origin) {
+            std::vector<std::vector<StateId>>* origin, std::uint64_t max_bytes) {
   SWARM_DEMAND(!parts.empty());
   SWARM_DEMAND(parts.size() == names.size());
   const std::size_t k = parts.size();
@@ -143,7 +144,19 @@ Fsm product(const std::vector<const Fsm*>& parts, const std::vector<std::string>
   TupleTable table(k);
   std::vector<StateId> cur(k, 0), next(k);
   table.find_or_insert(cur.data());
+  // The estimate: per state its tuple (table and origin), name and flags, and what the caller
+  // builds from it (a named Automaton); per transition its event and target, twice.
+  const double state_bytes = 160.0 + 24.0 * static_cast<double>(k);
   for (StateId z = 0; z < table.size(); ++z) {  // ids are handed out in breadth-first order
+    if (max_bytes != 0 && z % 4096 == 0) {
+      const double estimate = static_cast<double>(table.size()) * state_bytes + 16.0 * static_cast<double>(out.edge_event.size());
+      if (estimate > static_cast<double>(max_bytes))
+        throw BudgetExceeded(joined(names), "the product stopped after exploring " + std::to_string(z) + " states (" +
+                                                std::to_string(table.size()) + " found, " + std::to_string(out.edge_event.size()) +
+                                                " transitions): about " + format_bytes(estimate) + " and growing, over the limit of " +
+                                                format_bytes(static_cast<double>(max_bytes)) +
+                                                " (raise it with --memory-limit, e.g. --memory-limit 64G)");
+    }
     std::copy(table.tuple(z), table.tuple(z) + k, cur.begin());
     bool marked = true;
     for (std::size_t p = 0; p < k; ++p) marked = marked && parts[p]->marked[cur[p]];

@@ -16,10 +16,10 @@ struct Synthesis {
   std::vector<std::uint8_t> bad;           // [states of p]: spec disables what plant must do
 };
 
-Synthesis prepare(const Fsm& plant, const Fsm& spec) {
+Synthesis prepare(const Fsm& plant, const Fsm& spec, std::uint64_t max_bytes) {
   Synthesis s;
   std::vector<std::vector<StateId>> origin;
-  s.p = product({&plant, &spec}, {"plant", "spec"}, &origin);
+  s.p = product({&plant, &spec}, {"plant", "spec"}, &origin, max_bytes);
   const Fsm& p = s.p;
   s.unc_plant.assign(p.event_count(), 0);
   std::vector<EventId> in_p(plant.event_count());
@@ -41,14 +41,14 @@ Synthesis prepare(const Fsm& plant, const Fsm& spec) {
 }  // namespace
 
 bool is_controllable(const Fsm& plant, const Fsm& spec) {
-  const Synthesis s = prepare(plant, spec);
+  const Synthesis s = prepare(plant, spec, 0);
   for (const auto b : s.bad)
     if (b) return false;
   return true;
 }
 
-Fsm supcon(const Fsm& plant, const Fsm& spec) {
-  const Synthesis s = prepare(plant, spec);
+Fsm supcon(const Fsm& plant, const Fsm& spec, std::uint64_t max_bytes) {
+  const Synthesis s = prepare(plant, spec, max_bytes);
   const Fsm& p = s.p;
   const StateId n = p.state_count();
   const ReverseEdges unc = reverse_edges(p, &s.unc_plant);

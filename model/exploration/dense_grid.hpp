@@ -17,6 +17,11 @@ using namespace swarmcheck::exploration;
 class DenseGrid {
  public:
   explicit DenseGrid(const EnvironmentConfig& cfg);
+  // The bytes the arrays of an n x n map take (the memory budget's estimate).
+  static std::uint64_t bytes_for(int32_t n) {
+    return std::uint64_t(n) * std::uint64_t(n) *
+           (2 * sizeof(double) + sizeof(int64_t) + 2 * sizeof(bool) + sizeof(int));
+  }
 
   Candidate candidate(CellIndex c, int64_t tick) const {
     const Eigen::Index k = index(c);

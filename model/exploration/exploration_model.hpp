@@ -16,6 +16,10 @@ using namespace swarmcheck::exploration;
 class ExplorationModel {
  public:
   explicit ExplorationModel(const Scenario& s, RobotParams rp = RobotParams{});   // s must be valid
+  // About how many bytes a model run of `s` allocates (the memory budget's estimate).
+  static std::uint64_t estimated_bytes(const Scenario& s) {
+    return DenseGrid::bytes_for(s.map_size) + std::uint64_t{256} * s.robots.size();
+  }
   ExplorationModel(const ExplorationModel&) = delete;   // the grid points at cfg_
   ExplorationModel& operator=(const ExplorationModel&) = delete;
 

@@ -45,7 +45,7 @@ TEST(RunVerb, JsonSummaryOfTheDefaultScenarioInAbstractMode) {
 
 TEST(RunVerb, IncompleteRunReportsNullCompletionStep) {
   const Result r = sh("run --mode abstract --steps 3 --json");
-  ASSERT_EQ(r.status, 0) << r.out;
+  ASSERT_EQ(r.status, 1) << r.out;
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_FALSE(j.at("completed").get<bool>());
   EXPECT_TRUE(j.at("completion_step").is_null());
@@ -55,8 +55,8 @@ TEST(RunVerb, IncompleteRunReportsNullCompletionStep) {
 TEST(RunVerb, TraceIsAHeaderThenOneRecordPerStepAndRepeatsByteForByte) {
   const fs::path d = temp_dir();
   const std::string a = (d / "a.jsonl").string(), b = (d / "b.jsonl").string();
-  ASSERT_EQ(sh("run --rule stochastic --seed 9 --steps 500 --trace " + a).status, 0);
-  ASSERT_EQ(sh("run --rule stochastic --seed 9 --steps 500 --trace " + b).status, 0);
+  ASSERT_EQ(sh("run --rule stochastic --seed 9 --steps 500 --trace " + a).status, 1);
+  ASSERT_EQ(sh("run --rule stochastic --seed 9 --steps 500 --trace " + b).status, 1);
   std::ifstream fa(a), fb(b);
   const std::string ta((std::istreambuf_iterator<char>(fa)), {}), tb((std::istreambuf_iterator<char>(fb)), {});
   EXPECT_EQ(ta, tb);

@@ -35,6 +35,9 @@ class Exploration {
  public:
   explicit Exploration(const Scenario& s, ExplorationOptions options = {},
                        RobotParams robot = {});
+  // About how many bytes a run of `s` allocates (the map's cells and the robots' state), for
+  // refusing a scenario that cannot fit before allocating it.
+  static std::uint64_t estimated_bytes(const Scenario& s);
   ~Exploration();
   Exploration(Exploration&&) noexcept;
   Exploration& operator=(Exploration&&) noexcept;

@@ -59,11 +59,14 @@ Automaton trim(const Automaton& a);
 // The synchronous product (accessible part), states named "x1.x2...", breadth first. `names`
 // name the parts in error messages (an event controllable in one and not in another); by
 // default "part 1", "part 2", ...
-Automaton product(const std::vector<Automaton>& parts, const std::vector<std::string>& names = {});
+// max_bytes (0: none): stop with a swarmcheck::BudgetExceeded (an InputError) once the product's
+// estimated size passes it.
+Automaton product(const std::vector<Automaton>& parts, const std::vector<std::string>& names = {},
+                  std::uint64_t max_bytes = 0);
 // Is spec controllable with respect to plant?
 bool is_controllable(const Automaton& plant, const Automaton& spec);
 // The supremal controllable nonblocking supervisor (the empty automaton when none exists).
-Automaton supcon(const Automaton& plant, const Automaton& spec);
+Automaton supcon(const Automaton& plant, const Automaton& spec, std::uint64_t max_bytes = 0);
 // L(a) in L(b) and Lm(a) in Lm(b), each with its shortlex-least witness when it fails.
 Inclusion language_inclusion(const Automaton& a, const Automaton& b);
 
