@@ -17,7 +17,8 @@ test: build
 	ctest --preset release -j $(JOBS)
 
 # ASan + UBSan build of everything, with the same tests.
-test-debug: deps
+test-debug:
+	@scripts/install-deps --fuzz
 	@cmake --preset debug >/dev/null
 	@cmake --build --preset debug -j $(JOBS)
 	ctest --preset debug -j $(JOBS)
