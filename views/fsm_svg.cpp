@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "spec/util/demand.hpp"
+#include "impl/io/interrupt.hpp"
 #include "spec/util/input_error.hpp"
 
 namespace swarmcheck::views {
@@ -44,8 +45,16 @@ struct TempFile {
     if (fd < 0) throw InputError(tmpl, "cannot create a temporary file for dot");
     ::close(fd);
     path = tmpl;
+    slot = impl::io::register_temp_file(path.c_str());   // removed on SIGINT/SIGTERM too
   }
-  ~TempFile() { std::filesystem::remove(path); }
+  ~TempFile() {
+    std::error_code ignored;
+    std::filesystem::remove(path, ignored);
+    impl::io::release_temp_file(slot);
+  }
+  TempFile(const TempFile&) = delete;
+  TempFile& operator=(const TempFile&) = delete;
+  int slot = -1;
 };
 
 }  // namespace
