@@ -16,7 +16,8 @@ run: build
 test: build
 	ctest --preset release -j $(JOBS)
 
-# ASan + UBSan build of everything, with the same tests.
+# ASan + UBSan build of everything, with the same tests except the fault catalogue (label
+# "faults", excluded by the debug test preset), plus the libFuzzer targets (tests/fuzz).
 test-debug:
 	@scripts/install-deps --fuzz
 	@cmake --preset debug >/dev/null

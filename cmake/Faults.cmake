@@ -103,6 +103,9 @@ function(swarmcheck_fault_variant variant target fault_file)
   endforeach()
   # The rewritten files are sources even when they are headers, so that they are always generated.
   add_library(${variant} STATIC ${rewritten} ${variant_sources} ${reused})
+  # The catalogue measures the harness: a debug build's SWARM_ASSERTs in the rewritten sources
+  # would abort on the fault before the campaign can catch it, so they are off in a variant.
+  target_compile_definitions(${variant} PRIVATE NDEBUG)
   list(REMOVE_DUPLICATES rewritten)
   # A rewritten header shadows the original: its copy's root comes first on the include path.
   target_include_directories(${variant} BEFORE PRIVATE ${root})

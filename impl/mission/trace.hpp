@@ -32,8 +32,8 @@ class TraceWriter : public RunObserver {
 
 struct TraceEntry {
   bool is_event = false;
-  EventRecord event;  // when is_event
-  StepRecord step;    // otherwise
+  EventRecord event{};  // when is_event; {}: the bool is false, not indeterminate (UBSan)
+  StepRecord step{};    // otherwise
 };
 
 struct MissionTrace {
