@@ -42,13 +42,10 @@ ViewKind detect_view_kind(const std::string& text, const std::string& path) {
       "expected a trace header: {\"format\": \"swarmcheck-trace\", \"system\": \"exploration\" | "
       "\"handshake\", ...} or {\"format\": \"swarmcheck-mission-trace\", ...}";
   if (!h.is_object()) throw InputError(path + ":1", expected);
-  const auto text_of = [&](const char* key) {
-    return h.contains(key) && h[key].is_string() ? h[key].get<std::string>() : std::string();
-  };
-  const std::string format = text_of("format");
+  const std::string format = json_io::string_member(h, "format");
   if (format == "swarmcheck-mission-trace") return ViewKind::mission;
   if (format != "swarmcheck-trace") throw InputError(path + ":1", expected);
-  const std::string system = text_of("system");
+  const std::string system = json_io::string_member(h, "system");
   if (system == "handshake") return ViewKind::handshake;
   if (system == "exploration") return h.contains("divergence") ? ViewKind::counterexample : ViewKind::exploration;
   throw InputError(path + ":1", expected);
