@@ -1,61 +1,67 @@
 #include "proofs/obligations/handshake_concrete.hpp"
 
+#include <cmath>
+#include <memory>
+
 #include "spec/exploration/controller.hpp"
 #include "spec/exploration/handshake.hpp"
 
 namespace swarmcheck::proofs::handshake {
 namespace {
 
-using exploration::ControllerState;
+using C = num::Concrete;
 
-const exploration::Point_m kWaypoint{0.5, 0.5};
-
-// The spec's controller, with the robot on its waypoint or 3 m from it.
-ControllerState spec_controller(const ControllerState& c, bool env_out, bool at_waypoint) {
-  const exploration::BodyState pose{at_waypoint ? 0.5 : 3.5, 0.5, 0.0};
-  return exploration::controller_step(exploration::RobotParams{}, c,
-                                      exploration::ControllerInputs{pose, kWaypoint, env_out ? 1 : 0});
-}
-
-// A controller step: the new internal output; sets accept / arrive.
-ControllerPort controller(const Variant& v, ConcreteState& s, std::size_t i, bool env_out,
-                          int32_t env_epoch, bool arrival, StepEvents& ev) {
+// A controller step: the new internal output; sets accept.
+ControllerPort controller(const Variant& v, const exploration::RobotParams& rp, ConcreteState& s,
+                          std::size_t i, bool env_out, int32_t env_epoch, const RobotInput& in, StepEvents& ev) {
   ControllerPort p = s.internal[i];
+  const exploration::BodyState pose{in.x_m, in.y_m, in.theta_rad};
+  const exploration::Point_m wp{s.x_desired_m[i], s.y_desired_m[i]};
   if (v.protocol == Protocol::flag) {
-    const ControllerState before = s.ctrl[i];
-    s.ctrl[i] = spec_controller(before, env_out, arrival);
+    const exploration::ControllerState before = s.ctrl[i];
+    s.ctrl[i] = exploration::controller_step(rp, before, exploration::ControllerInputs{pose, wp, env_out ? 1 : 0});
     p.out = s.ctrl[i].on_destination_output == 1;
     ev.accept[i] = before.on_destination_output == 1 && !p.out;
-    ev.arrive[i] = before.on_destination_output == 0 && p.out;
-  } else if (env_epoch != p.ack) {   // a new epoch: accept its waypoint
-    p.ack = env_epoch;
-    p.done = false;
-    ev.accept[i] = true;
-  } else if (!p.done && arrival) {
-    p.done = true;
-    ev.arrive[i] = true;
+    return p;
   }
+  const bool arrived = exploration::arrived_rule<C>({wp[0] - pose.x_m, wp[1] - pose.y_m}, rp.tolerance_m);
+  const exploration::EpochControllerT<C> n = exploration::epoch_controller_rule<C>({p.ack, p.done}, env_epoch, arrived);
+  ev.accept[i] = n.ack != p.ack;
+  p.ack = n.ack;
+  p.done = n.done;
   return p;
 }
 
 // The Environment's step, reading the controllers' ports; returns whether it plans.
 bool environment(const Variant& v, ConcreteState& s, const std::vector<ControllerPort>& ports) {
+  const std::size_t n = ports.size();
   if (v.protocol == Protocol::flag) {
-    bool all = true;
-    for (const ControllerPort& p : ports) all = all && p.out;
+    const std::unique_ptr<bool[]> outs(new bool[n]);
+    for (std::size_t k = 0; k < n; ++k) outs[k] = ports[k].out;
+    const bool all = exploration::all_arrived_rule<C>(std::span<const bool>(outs.get(), n));
     const exploration::HandshakeStep hs = exploration::environment_handshake(s.env, all);
     s.env = hs.next;
     return hs.plan;
   }
-  bool all = true;
-  for (const ControllerPort& p : ports) all = all && p.ack == s.epoch && p.done;
-  if (all) s.epoch = (s.epoch + 1) % kEpochs;
-  return all;
+  std::vector<int32_t> acks(n);
+  const std::unique_ptr<bool[]> done(new bool[n]);
+  for (std::size_t k = 0; k < n; ++k) {
+    acks[k] = ports[k].ack;
+    done[k] = ports[k].done;
+  }
+  const exploration::EpochStepT<C> e =
+      exploration::epoch_environment_rule<C>(s.epoch, acks, std::span<const bool>(done.get(), n));
+  s.epoch = e.epoch;
+  return e.plan;
 }
 
 }  // namespace
 
 const char* to_string(Master m) { return m == Master::jacobi ? "jacobi" : "gauss-seidel"; }
+
+bool at_waypoint(double x_m, double y_m, double x_desired_m, double y_desired_m, double tolerance_m) {
+  return std::fabs(x_desired_m - x_m) + std::fabs(y_desired_m - y_m) < tolerance_m;
+}
 
 ConcreteState initial_state(const Variant&, int robots) {
   ConcreteState s;
@@ -64,32 +70,41 @@ ConcreteState initial_state(const Variant&, int robots) {
   s.ctrl.assign(n, exploration::initial_controller());
   s.internal.assign(n, ControllerPort{});
   s.port = s.internal;
+  s.x_desired_m.assign(n, 0.5);
+  s.y_desired_m.assign(n, 0.5);
   s.reached.assign(n, true);
   s.fresh.assign(n, false);
   return s;
 }
 
-StepEvents step(const Variant& v, ConcreteState& s, const std::vector<bool>& arrival) {
+StepEvents step(const Variant& v, const exploration::RobotParams& rp, ConcreteState& s,
+                const std::vector<RobotInput>& in) {
   const std::size_t n = s.internal.size();
   StepEvents ev;
   ev.accept.assign(n, false);
-  ev.arrive.assign(n, false);
+  ev.at_waypoint.assign(n, false);
   // Every component reads the outputs of the previous step (Jacobi); under Gauss-Seidel the
   // controllers step first and the Environment reads their new outputs.
   const bool env_out = s.env.on_destination_output == 1;
   const int32_t env_epoch = s.epoch;
   std::vector<ControllerPort> next(n);
-  for (std::size_t i = 0; i < n; ++i)
-    next[i] = controller(v, s, i, env_out, env_epoch, arrival[i], ev);
+  for (std::size_t i = 0; i < n; ++i) {
+    ev.at_waypoint[i] = at_waypoint(in[i].x_m, in[i].y_m, s.x_desired_m[i], s.y_desired_m[i], rp.tolerance_m);
+    next[i] = controller(v, rp, s, i, env_out, env_epoch, in[i], ev);
+  }
   std::vector<ControllerPort> next_port(n);
   for (std::size_t i = 0; i < n; ++i) next_port[i] = v.late_controller ? s.internal[i] : next[i];
   ev.plan = environment(v, s, v.master == Master::jacobi ? s.port : next_port);
   for (std::size_t i = 0; i < n; ++i) {
-    const bool reached_now = s.reached[i] || ev.arrive[i];
+    const bool reached_now = s.reached[i] || ev.at_waypoint[i];
     if (ev.plan && !reached_now && ev.violated.empty()) ev.violated = "no-early-plan";
     if (ev.accept[i] && !s.fresh[i] && ev.violated.empty()) ev.violated = "fresh-acceptance";
     s.reached[i] = !ev.plan && reached_now;
     s.fresh[i] = ev.plan || (s.fresh[i] && !ev.accept[i]);
+    if (ev.plan) {
+      s.x_desired_m[i] = in[i].new_x_desired_m;
+      s.y_desired_m[i] = in[i].new_y_desired_m;
+    }
   }
   s.internal = next;
   s.port = next_port;

@@ -1,13 +1,15 @@
 #pragma once
-// The onDestination handshake run on concrete values: the Environment through the spec's
-// environment_handshake, each controller through the spec's controller_step (a robot either
-// stands on its waypoint or 3 m away, as the arrival input says), stepped by a Jacobi or a
-// Gauss-Seidel master. Also the two variants the proofs study: a controller whose output
-// reaches the Environment one step late, and the epoch-numbered handshake.
+// The onDestination handshake run on concrete values, through the executed code: the
+// Environment through environment_handshake_rule and all_arrived_rule (or the epoch rules),
+// each controller through controller_step (or epoch_controller_rule), stepped by a Jacobi or a
+// Gauss-Seidel master, each robot's pose given per step (motion is the caller's). Also the two
+// variants the proofs study: a controller whose output reaches the Environment one step late,
+// and the epoch-numbered handshake.
 //
-// Ghost state tracks what the protocol must guarantee:
-//   reached[i]  robot i stands on the last waypoint the Environment issued to it
-//   fresh[i]    a waypoint was issued to robot i since it last accepted one
+// Ghost state tracks what the protocol must guarantee, stated here (not in spec/):
+//   at waypoint   |x - xDesired| + |y - yDesired| < tolerance, from the pose
+//   reached[i]    robot i has been at its waypoint since the Environment last planned
+//   fresh[i]      a waypoint was issued to robot i since it last accepted one
 // and a step violates
 //   "no-early-plan"     if the Environment plans while some robot has not reached its waypoint
 //   "fresh-acceptance"  if a controller accepts when no new waypoint was issued to it
@@ -30,13 +32,17 @@ struct Variant {
 
 const char* to_string(Master m);   // "jacobi", "gauss-seidel"
 
-constexpr int32_t kEpochs = 4;     // epochs are counted modulo 4 (2 bits)
-
 struct ControllerPort {            // what a controller shows the Environment
   bool out = true;                 // flag protocol: onDestinationOutput
   int32_t ack = 0;                 // epoch protocol: the epoch it last accepted
   bool done = true;                // epoch protocol: it has arrived at that epoch's waypoint
   bool operator==(const ControllerPort&) const = default;
+};
+
+// One robot in one step: its pose, and the waypoint the Environment issues it if it plans.
+struct RobotInput {
+  double x_m = 0, y_m = 0, theta_rad = 0;
+  double new_x_desired_m = 0.5, new_y_desired_m = 0.5;
 };
 
 struct ConcreteState {
@@ -45,20 +51,25 @@ struct ConcreteState {
   std::vector<exploration::ControllerState> ctrl;   // flag protocol: the spec's controller
   std::vector<ControllerPort> internal;     // the controllers' outputs as they compute them
   std::vector<ControllerPort> port;         // as the Environment reads them (late: a step old)
+  std::vector<double> x_desired_m, y_desired_m;   // each robot's current waypoint
   std::vector<bool> reached, fresh;
 };
 
 struct StepEvents {
   bool plan = false;
-  std::vector<bool> accept, arrive;
+  std::vector<bool> accept, at_waypoint;
   std::string violated;   // "" or the property this step breaks
 };
 
+// The property's "at its waypoint": |x - xDesired| + |y - yDesired| < tolerance.
+bool at_waypoint(double x_m, double y_m, double x_desired_m, double y_desired_m, double tolerance_m);
+
 // The same for every variant: the spec's initial handshake and controllers, robots on their
-// waypoints, nothing issued.
+// waypoints (0.5, 0.5), nothing issued.
 ConcreteState initial_state(const Variant& v, int robots);
 
-// One master step with these arrival inputs (arrival[i]: robot i stands on its waypoint).
-StepEvents step(const Variant& v, ConcreteState& s, const std::vector<bool>& arrival);
+// One master step with these robot inputs, controllers with parameters rp.
+StepEvents step(const Variant& v, const exploration::RobotParams& rp, ConcreteState& s,
+                const std::vector<RobotInput>& in);
 
 }  // namespace swarmcheck::proofs::handshake

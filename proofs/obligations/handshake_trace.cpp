@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>
 
@@ -42,6 +43,14 @@ class Line {
     if (!v.is_string()) throw InputError(where_, fmt::format("\"{}\" must be a string", key));
     return v.get<std::string>();
   }
+  // An optional finite number (traces written before poses were recorded lack them).
+  double number_or(const Json& obj, const char* key, double fallback) const {
+    if (!obj.is_object() || !obj.contains(key)) return fallback;
+    const Json& v = obj[key];
+    if (!v.is_number() || !std::isfinite(v.get<double>()))
+      throw InputError(where_, fmt::format("\"{}\" must be a finite number", key));
+    return v.get<double>();
+  }
   const Json& json() const { return j_; }
 
  private:
@@ -60,6 +69,9 @@ void read_header(const Line& l, HandshakeTrace& t) {
   if (t.master != "jacobi" && t.master != "gauss-seidel")
     throw InputError(l.where(), "\"master\" must be \"jacobi\" or \"gauss-seidel\"");
   t.controller = j.contains("controller") ? l.string(j, "controller") : "spec";
+  t.tolerance_m = l.number_or(j, "tolerance", t.tolerance_m);
+  t.orient_tolerance_rad = l.number_or(j, "orient_tolerance", t.orient_tolerance_rad);
+  t.reorient_rad = l.number_or(j, "reorient", t.reorient_rad);
 }
 
 TraceStep read_step(const Line& l, const HandshakeTrace& t, int64_t expected_step) {
@@ -76,7 +88,9 @@ TraceStep read_step(const Line& l, const HandshakeTrace& t, int64_t expected_ste
   for (const Json& c : cs)
     s.controllers.push_back(TraceController{static_cast<int32_t>(l.integer(c, "onDestinationOutput", 0, 1)),
                                             l.boolean(c, "arrival"), l.boolean(c, "accepted"),
-                                            l.boolean(c, "reached")});
+                                            l.boolean(c, "reached"), l.number_or(c, "x", 0),
+                                            l.number_or(c, "y", 0), l.number_or(c, "theta", 0),
+                                            l.number_or(c, "xDesired", 0.5), l.number_or(c, "yDesired", 0.5)});
   if (j.contains("violated")) s.violated = l.string(j, "violated");
   return s;
 }
@@ -86,12 +100,14 @@ TraceStep read_step(const Line& l, const HandshakeTrace& t, int64_t expected_ste
 std::string write_handshake_trace(const HandshakeTrace& t) {
   std::string out = Json{{"format", "swarmcheck-trace"}, {"format_version", 1}, {"system", "handshake"},
                          {"obligation", t.obligation}, {"robots", t.robots}, {"master", t.master},
-                         {"controller", t.controller}}.dump() + "\n";
+                         {"controller", t.controller}, {"tolerance", t.tolerance_m},
+                         {"orient_tolerance", t.orient_tolerance_rad}, {"reorient", t.reorient_rad}}.dump() + "\n";
   for (const TraceStep& s : t.steps) {
     Json cs = Json::array();
     for (const TraceController& c : s.controllers)
       cs.push_back({{"onDestinationOutput", c.on_destination_output}, {"arrival", c.arrival},
-                    {"accepted", c.accepted}, {"reached", c.reached}});
+                    {"accepted", c.accepted}, {"reached", c.reached}, {"x", c.x_m}, {"y", c.y_m},
+                    {"theta", c.theta_rad}, {"xDesired", c.x_desired_m}, {"yDesired", c.y_desired_m}});
     Json j = {{"step", s.step}, {"flag", s.flag}, {"onDestinationOutput", s.on_destination_output},
               {"plan", s.plan}, {"controllers", cs}};
     if (!s.violated.empty()) j["violated"] = s.violated;
@@ -128,16 +144,18 @@ int show_handshake_trace(const std::string& path, std::FILE* out) {
   fmt::print(out, "handshake trace of {}: {} robot(s), {} master, {} controller\n", t.obligation, t.robots,
              t.master, t.controller);
   fmt::print(out, "flag, out, ctrl out: the Environment's and each controller's onDestinationOutput at the\n"
-                  "start of the step; plan: the Environment plans in the step; arr: arrival input;\n"
-                  "acc: accepts a waypoint in the step; at: stands on its issued waypoint\n\n");
+                  "start of the step; plan: the Environment plans in the step; arr: the robot is at its\n"
+                  "waypoint in the step (|dx| + |dy| < tolerance {:g} m); acc: accepts a waypoint in the step;\n"
+                  "at: has reached its issued waypoint; dist: |dx| + |dy| in the step (m)\n\n", t.tolerance_m);
   std::string head = fmt::format("{:>5}  {:>4} {:>3} {:>4}", "step", "flag", "out", "plan");
-  for (int32_t i = 0; i < t.robots; ++i) head += fmt::format("  | ctrl {:<2} out arr acc at", i);
+  for (int32_t i = 0; i < t.robots; ++i) head += fmt::format("  | ctrl {:<2} out arr acc at     dist", i);
   fmt::print(out, "{}\n", head);
   for (const TraceStep& s : t.steps) {
     std::string row = fmt::format("{:>5}  {:>4} {:>3} {:>4}", s.step, s.flag, s.on_destination_output, s.plan ? "yes" : "-");
     for (const TraceController& c : s.controllers)
-      row += fmt::format("  |         {:>3} {:>3} {:>3} {:>2}", c.on_destination_output, c.arrival ? 1 : 0,
-                         c.accepted ? 1 : 0, c.reached ? 1 : 0);
+      row += fmt::format("  |         {:>3} {:>3} {:>3} {:>2} {:>8.3g}", c.on_destination_output, c.arrival ? 1 : 0,
+                         c.accepted ? 1 : 0, c.reached ? 1 : 0,
+                         std::fabs(c.x_desired_m - c.x_m) + std::fabs(c.y_desired_m - c.y_m));
     if (!s.violated.empty()) row += "   <- violates " + s.violated;
     fmt::print(out, "{}\n", row);
   }

@@ -5,9 +5,12 @@
 // then one object per master step t: the Environment's state at the start of the step
 // ("flag", "onDestinationOutput"), whether it plans in the step ("plan"), each controller's
 // onDestinationOutput at the start of the step (a late controller's: the value on its port,
-// one step old), its arrival input, whether it accepts a
-// waypoint in the step, whether its robot stands on its issued waypoint (ghost "reached"),
-// and "violated": the property the step breaks, on that step only.
+// one step old), "arrival": whether its robot is at its waypoint in the step (by its pose),
+// whether it accepts a waypoint in the step, whether its robot has reached its issued waypoint
+// (ghost "reached", at the start of the step), the pose ("x", "y", "theta") and the waypoint
+// ("xDesired", "yDesired") in the step, and "violated": the property the step breaks, on that
+// step only. A trace carries the controller parameters it was found with ("tolerance",
+// "orient_tolerance", "reorient") in its header.
 #include <cstdint>
 #include <cstdio>
 #include <string>
@@ -20,6 +23,7 @@ struct TraceController {
   bool arrival = false;
   bool accepted = false;
   bool reached = false;
+  double x_m = 0, y_m = 0, theta_rad = 0, x_desired_m = 0.5, y_desired_m = 0.5;
 };
 
 struct TraceStep {
@@ -36,6 +40,7 @@ struct HandshakeTrace {
   int32_t robots = 0;
   std::string master;       // "jacobi" or "gauss-seidel"
   std::string controller;   // "spec" or "late"
+  double tolerance_m = 0.05, orient_tolerance_rad = 0.01, reorient_rad = 0.2;
   std::vector<TraceStep> steps;
 };
 

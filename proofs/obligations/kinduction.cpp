@@ -3,26 +3,34 @@
 #include <fmt/format.h>
 
 namespace swarmcheck::proofs {
+namespace {
+
+// Base case of depth k + 1: a violation on step k from the initial state, the earlier steps
+// good. On sat, `out` holds the counterexample.
+z3::check_result base_case(Session& session, TransitionSystem& ts, int k, const std::string& label,
+                           KInductionResult& out) {
+  z3::solver s = session.make_solver();
+  s.add(ts.init(0));
+  for (int t = 0; t <= k; ++t) s.add(ts.trans(t));
+  for (int t = 0; t < k; ++t) s.add(ts.good(t));
+  s.add(!ts.good(k));
+  const z3::check_result r = session.check(s, label);
+  if (r == z3::sat) {
+    out.verdict = Verdict::refuted;
+    out.depth = k + 1;
+    out.model = s.get_model();
+  }
+  return r;
+}
+
+}  // namespace
 
 KInductionResult k_induction(Session& session, TransitionSystem& ts, int max_k,
                              const std::string& label) {
   KInductionResult out;
   for (int k = 0; k <= max_k; ++k) {
-    {  // base case: a violation on step k from the initial state, the earlier steps good
-      z3::solver s = session.make_solver();
-      s.add(ts.init(0));
-      for (int t = 0; t <= k; ++t) s.add(ts.trans(t));
-      for (int t = 0; t < k; ++t) s.add(ts.good(t));
-      s.add(!ts.good(k));
-      const z3::check_result r = session.check(s, fmt::format("{}-base-d{}", label, k + 1));
-      if (r == z3::sat) {
-        out.verdict = Verdict::refuted;
-        out.depth = k + 1;
-        out.model = s.get_model();
-        return out;
-      }
-      if (r != z3::unsat) return out;
-    }
+    const z3::check_result base = base_case(session, ts, k, fmt::format("{}-base-d{}", label, k + 1), out);
+    if (base != z3::unsat) return out;   // refuted, or unknown
     {  // step case: k good steps along a simple path, then a bad one
       z3::solver s = session.make_solver();
       for (int t = 0; t <= k; ++t) s.add(ts.trans(t));
@@ -40,6 +48,13 @@ KInductionResult k_induction(Session& session, TransitionSystem& ts, int max_k,
     }
   }
   return out;   // the induction did not close within max_k: unknown
+}
+
+KInductionResult bounded_check(Session& session, TransitionSystem& ts, int max_depth, const std::string& label) {
+  KInductionResult out;
+  for (int k = 0; k < max_depth; ++k)
+    if (base_case(session, ts, k, fmt::format("{}-bmc-d{}", label, k + 1), out) != z3::unsat) return out;
+  return out;
 }
 
 }  // namespace swarmcheck::proofs

@@ -34,4 +34,8 @@ struct KInductionResult {
 KInductionResult k_induction(Session& session, TransitionSystem& ts, int max_k,
                              const std::string& label);
 
+// Bounded model checking alone: the base cases of depth 1..max_depth. refuted with the
+// counterexample, or unknown when none is found (nothing is proved).
+KInductionResult bounded_check(Session& session, TransitionSystem& ts, int max_depth, const std::string& label);
+
 }  // namespace swarmcheck::proofs

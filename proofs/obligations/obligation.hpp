@@ -36,6 +36,7 @@ struct Obligation {
   Verdict expected;
   std::vector<std::string> assumptions;   // what the encoding abstracts or bounds
   std::function<Outcome(Session&)> run;
+  std::vector<std::string> reads;         // the spec functions whose definition it encodes
 };
 
 // Every obligation, in the order `prove` runs them.

@@ -1,7 +1,10 @@
-// Obligation occupancy: one planning step of the fixed rule sets, robots in index order with
-// occupancy updated at once, keeps every robot in the map, off obstacles, and in its own cell.
+// Obligation occupancy: one planning step of the fixed rule sets keeps every robot in the map,
+// off obstacles, and in its own cell. Proved in two parts (occupancy.hpp): the choice lemma
+// about the spec's choose_rule (interpreted symbolically, a counterexample replayed through the
+// executed choose()), and the planning step built on any choice the lemma allows.
 #include "proofs/obligations/occupancy.hpp"
 
+#include <array>
 #include <fmt/format.h>
 
 #include "proofs/obligations/obligation.hpp"
@@ -9,50 +12,93 @@
 namespace swarmcheck::proofs {
 namespace occupancy {
 
-z3::expr deterministic_target(z3::context& c, const std::vector<SymCandidate>& cands) {
-  // Scan: a valid candidate becomes best when there is none yet or key <= best key.
-  z3::expr has = c.bool_val(false), best = c.int_val(-1), best_key = c.real_val(0),
-           best_blocked = c.bool_val(false);
-  for (std::size_t k = 0; k < cands.size(); ++k) {
-    const z3::expr take = cands[k].valid && (!has || cands[k].key <= best_key);
-    best = z3::ite(take, c.int_val(static_cast<int>(k)), best);
-    best_key = z3::ite(take, cands[k].key, best_key);
-    best_blocked = z3::ite(take, cands[k].blocked, best_blocked);
-    has = has || cands[k].valid;
-  }
-  z3::expr first_free = c.int_val(-1);   // built backwards: the first free one wins
-  for (std::size_t k = cands.size(); k-- > 0;)
-    first_free = z3::ite(cands[k].valid && !cands[k].blocked, c.int_val(static_cast<int>(k)), first_free);
-  return z3::ite(!has, c.int_val(-1), z3::ite(!best_blocked, best, first_free));
+constexpr unsigned kIndexBits = 8;   // window indices and counts: s_range <= 3 has 48 candidates
+
+std::vector<exploration::SymbolicCandidate> symbolic_window(int s_range, const std::string& prefix) {
+  std::vector<exploration::SymbolicCandidate> out;
+  const int side = 2 * s_range + 1;
+  for (int k = 0; k < side * side - 1; ++k)
+    out.push_back({sym::Real::var(fmt::format("{}_tau_{}", prefix, k)), sym::Bool::var(fmt::format("{}_blocked_{}", prefix, k)),
+                   sym::Bool::var(fmt::format("{}_present_{}", prefix, k))});
+  return out;
 }
 
-z3::expr stochastic_target(z3::context& c, z3::solver& s, const std::vector<SymCandidate>& cands,
-                           const z3::expr& tie, const z3::expr& fallback) {
-  z3::expr any_valid = c.bool_val(false), any_free = c.bool_val(false);
-  for (const SymCandidate& x : cands) {
-    any_valid = any_valid || x.valid;
-    any_free = any_free || (x.valid && !x.blocked);
-  }
-  z3::expr tie_blocked = c.bool_val(false);
-  for (std::size_t k = 0; k < cands.size(); ++k) {
-    const z3::expr is_tie = tie == c.int_val(static_cast<int>(k));
-    z3::expr minimal = cands[k].valid;
-    for (const SymCandidate& y : cands) minimal = minimal && z3::implies(y.valid, cands[k].key <= y.key);
-    s.add(z3::implies(is_tie && any_valid, minimal));
-    s.add(z3::implies(fallback == c.int_val(static_cast<int>(k)) && any_free, cands[k].valid && !cands[k].blocked));
-    tie_blocked = z3::ite(is_tie, cands[k].blocked, tie_blocked);
-  }
-  const int n = static_cast<int>(cands.size());
-  s.add(tie >= 0 && tie < n && fallback >= 0 && fallback < n);
-  return z3::ite(!any_valid, c.int_val(-1), z3::ite(!tie_blocked, tie, z3::ite(any_free, fallback, c.int_val(-1))));
+ChoiceQuery choice_query(Translator& t, const exploration::RuleDescriptor& rules,
+                         const std::vector<exploration::SymbolicCandidate>& cands) {
+  z3::context& c = t.ctx();
+  // phi = 1: a key is the pheromone, already any real (pow of a free value adds nothing).
+  const exploration::ChoiceTermsT<num::Symbolic> terms{sym::Real(1.0), sym::Real::var("eta_term"),
+                                                       sym::Real::var("thesis_best_start")};
+  const exploration::ChoiceT<num::Symbolic> ch =
+      exploration::choose_rule<num::Symbolic>(rules, terms, cands, exploration::SymbolicDrawSite{"robot"});
+  const z3::expr target = t(ch.target);
+  z3::expr ok = target == c.bv_val(-1, kIndexBits);
+  for (std::size_t k = 0; k < cands.size(); ++k)
+    ok = ok || (target == c.bv_val(static_cast<int>(k), kIndexBits) && t(cands[k].present) && !t(cands[k].blocked));
+  return {target, !ok};
 }
 
 }  // namespace occupancy
 
 namespace {
 
-using occupancy::SymCandidate;
-constexpr int kMaxRobots = 6;
+using S = num::Symbolic;
+constexpr int kMaxRange = 3;
+constexpr std::array<exploration::RuleSet, 2> kRuleSets{exploration::RuleSet::deterministic,
+                                                        exploration::RuleSet::stochastic};
+
+struct Check {
+  z3::check_result result;
+  std::string detail;
+};
+
+// Replays a choice counterexample through the executed choose(): the model's present
+// candidates, in order. The stochastic rules draw from seeds 0..999 (the model's draws are free
+// choices): confirmed when one seed sends the robot to a blocked candidate.
+bool replay_choice(const z3::model& m, Translator& t, const exploration::RuleDescriptor& rules,
+                   const std::vector<exploration::SymbolicCandidate>& cands, std::string& detail) {
+  std::vector<exploration::Candidate> concrete;
+  std::vector<std::size_t> slot;
+  for (std::size_t k = 0; k < cands.size(); ++k) {
+    if (!m.eval(t(cands[k].present), true).is_true()) continue;
+    concrete.push_back({{0, static_cast<int32_t>(k)}, model_double(m, t(cands[k].tau)),
+                        m.eval(t(cands[k].blocked), true).is_true()});
+    slot.push_back(k);
+  }
+  const exploration::ChoiceTerms terms{1.0, model_double(m, m.ctx().real_const("eta_term")),
+                                       model_double(m, m.ctx().real_const("thesis_best_start"))};
+  const bool draws = rules.best == exploration::BestRule::uniform_minimum ||
+                     rules.fallback == exploration::FallbackRule::uniform_free;
+  for (uint64_t seed = 0; seed < (draws ? 1000U : 1U); ++seed) {
+    const exploration::Choice ch = exploration::choose(rules, terms, concrete, exploration::DrawSite{seed, 0, 0});
+    if (ch.target >= 0 && concrete[static_cast<std::size_t>(ch.target)].blocked) {
+      std::size_t blocked = 0;
+      for (const auto& x : concrete) blocked += x.blocked ? 1 : 0;
+      detail = fmt::format("{} candidates ({} blocked): choose() sends the robot to candidate {} of the window, "
+                           "which is blocked (seed {}; confirmed by running choose())",
+                           concrete.size(), blocked, slot[static_cast<std::size_t>(ch.target)], seed);
+      return true;
+    }
+  }
+  return false;
+}
+
+Check check_choice(Session& session, exploration::RuleSet set, int s_range) {
+  const exploration::RuleDescriptor& rules = exploration::rules_of(set);
+  Translator t(session.ctx(), RealTheory::real, false, occupancy::kIndexBits);
+  const auto cands = occupancy::symbolic_window(s_range, "c");
+  const occupancy::ChoiceQuery q = occupancy::choice_query(t, rules, cands);
+  z3::solver s = session.make_preprocessed_solver();
+  s.add(t.side_conditions());
+  s.add(q.violates);
+  const std::string label = fmt::format("choice-{}-s{}", rules.name, s_range);
+  const z3::check_result r = session.check_preprocessed(s, label);
+  if (r != z3::sat) return {r, ""};
+  std::string detail;
+  const bool confirmed = replay_choice(s.get_model(), t, rules, cands, detail);
+  return {confirmed ? z3::sat : z3::unknown,
+          confirmed ? label + ": " + detail : label + ": NOT reproduced by the executed choose(): a spurious counterexample"};
+}
 
 struct Cell {
   z3::expr i, j;
@@ -61,69 +107,63 @@ struct Cell {
 z3::expr in_map(const Cell& x, const z3::expr& n) { return x.i >= 0 && x.j >= 0 && x.i < n && x.j < n; }
 z3::expr same(const Cell& a, const Cell& b) { return a.i == b.i && a.j == b.j; }
 
-z3::check_result check(Session& session, int robots, bool stochastic) {
+// One robot's move in the planning step, for any number of robots: the mover, at a cell of a
+// symbolic map with free obstacles, takes any target the choice lemma allows, with one other
+// robot standing for every other (occupancy is pairwise: if the step keeps the mover in the map,
+// off obstacles and apart from any one other robot, it keeps it apart from all of them, and
+// robots moving one after another in index order keep the invariant, whatever their number).
+z3::check_result check_move(Session& session, int s_range) {
   z3::context& c = session.ctx();
   z3::solver s = session.make_solver();
   const z3::expr n = c.int_const("map_size");
   const z3::sort I = c.int_sort();
   const z3::func_decl obstacle = c.function("obstacle", I, I, c.bool_sort());
-  const z3::func_decl key = c.function("key", I, I, c.real_sort());   // pow(tau, phi) per cell
-  s.add(n >= 1);
-  std::vector<Cell> pos;
-  for (int r = 0; r < robots; ++r) {
-    pos.push_back(Cell{c.int_const(fmt::format("i_{}", r).c_str()), c.int_const(fmt::format("j_{}", r).c_str())});
-    s.add(in_map(pos.back(), n) && !obstacle(pos.back().i, pos.back().j));
-    for (int q = 0; q < r; ++q) s.add(!same(pos[static_cast<std::size_t>(q)], pos.back()));
-  }
-  // Robots decide in index order; robot r sees robots < r already moved (s_range = 1).
-  for (int r = 0; r < robots; ++r) {
-    const Cell here = pos[static_cast<std::size_t>(r)];
-    std::vector<Cell> cells;
-    std::vector<SymCandidate> cands;
-    for (int di = -1; di <= 1; ++di)
-      for (int dj = -1; dj <= 1; ++dj) {
-        if (di == 0 && dj == 0) continue;
-        const Cell x{here.i + di, here.j + dj};
-        z3::expr occupied = c.bool_val(false);
-        for (int q = 0; q < robots; ++q)
-          if (q != r) occupied = occupied || same(pos[static_cast<std::size_t>(q)], x);
-        cells.push_back(x);
-        cands.push_back(SymCandidate{in_map(x, n), key(x.i, x.j), obstacle(x.i, x.j) || occupied});
-      }
-    const z3::expr target =
-        stochastic ? occupancy::stochastic_target(c, s, cands, c.int_const(fmt::format("tie_{}", r).c_str()),
-                                                  c.int_const(fmt::format("fallback_{}", r).c_str()))
-                   : occupancy::deterministic_target(c, cands);
-    z3::expr ni = here.i, nj = here.j;
-    for (std::size_t k = 0; k < cells.size(); ++k) {
-      ni = z3::ite(target == c.int_val(static_cast<int>(k)), cells[k].i, ni);
-      nj = z3::ite(target == c.int_val(static_cast<int>(k)), cells[k].j, nj);
+  const Cell here{c.int_const("i"), c.int_const("j")}, other{c.int_const("other_i"), c.int_const("other_j")};
+  auto fine = [&](const Cell& x) { return in_map(x, n) && !obstacle(x.i, x.j); };
+  s.add(n >= 1 && fine(here) && fine(other) && !same(here, other));
+  const z3::expr target = c.int_const("target");
+  z3::expr allowed = target == -1;
+  z3::expr ni = here.i, nj = here.j;
+  int k = 0;
+  for (int di = -s_range; di <= s_range; ++di)
+    for (int dj = -s_range; dj <= s_range; ++dj) {
+      if (di == 0 && dj == 0) continue;
+      const Cell x{here.i + di, here.j + dj};
+      allowed = allowed || (target == k && in_map(x, n) && !(obstacle(x.i, x.j) || same(other, x)));
+      ni = z3::ite(target == k, x.i, ni);
+      nj = z3::ite(target == k, x.j, nj);
+      ++k;
     }
-    const Cell moved{c.int_const(fmt::format("i_{}_after", r).c_str()), c.int_const(fmt::format("j_{}_after", r).c_str())};
-    s.add(moved.i == ni && moved.j == nj);
-    pos[static_cast<std::size_t>(r)] = moved;
-  }
-  z3::expr ok = c.bool_val(true);
-  for (int r = 0; r < robots; ++r) {
-    const Cell& p = pos[static_cast<std::size_t>(r)];
-    ok = ok && in_map(p, n) && !obstacle(p.i, p.j);
-    for (int q = 0; q < r; ++q) ok = ok && !same(pos[static_cast<std::size_t>(q)], p);
-  }
-  s.add(!ok);
-  return session.check(s, fmt::format("{}-r{}", stochastic ? "stochastic" : "deterministic", robots));
+  s.add(allowed);
+  const Cell moved{c.int_const("i_after"), c.int_const("j_after")};
+  s.add(moved.i == ni && moved.j == nj);
+  s.add(!(fine(moved) && !same(moved, other)));
+  return session.check(s, fmt::format("move-s{}", s_range));
 }
 
 Outcome run(Session& session) {
-  for (int robots = 1; robots <= kMaxRobots; ++robots)
-    for (bool stochastic : {false, true}) {
-      const z3::check_result r = check(session, robots, stochastic);
+  for (int s_range = 1; s_range <= kMaxRange; ++s_range)
+    for (exploration::RuleSet set : kRuleSets) {
+      const Check r = check_choice(session, set, s_range);
+      if (r.result == z3::sat) return {Verdict::refuted, "sat: " + r.detail, {}};
+      if (r.result != z3::unsat)
+        return {Verdict::unknown, r.detail.empty() ? "unknown on query " + session.queries().back().label : r.detail, {}};
+    }
+  for (int s_range = 1; s_range <= kMaxRange; ++s_range) {
+    {
+      const z3::check_result r = check_move(session, s_range);
       if (r == z3::sat)
-        return {Verdict::refuted, "sat: query " + session.queries().back().label + " has a counterexample", {}};
+        return {Verdict::unknown,
+                "sat on query " + session.queries().back().label +
+                    ": the planning step breaks occupancy with choices the lemma allows (the composition, not the rule)",
+                {}};
       if (r != z3::unsat) return {Verdict::unknown, "unknown on query " + session.queries().back().label, {}};
     }
+  }
   return {Verdict::proved,
-          fmt::format("unsat: deterministic and stochastic, 1..{} robots, {} queries", kMaxRobots,
-                      session.queries().size()),
+          fmt::format("unsat: the choice lemma (deterministic and stochastic, s_range 1..{}) and one robot's move "
+                      "(s_range 1..{}), so every number of robots; {} queries",
+                      kMaxRange, kMaxRange, session.queries().size()),
           {}};
 }
 
@@ -135,12 +175,17 @@ std::vector<Obligation> occupancy_obligations() {
       "One planning step of the deterministic or stochastic rule set, from a state with every "
       "robot in the map, off obstacles and alone in its cell, keeps all three.",
       Verdict::proved,
-      {"symbolic window contents: the map size, the obstacle map and the keys pow(tau, phi) of "
-       "every cell are free (uninterpreted functions), so any pheromone and any obstacles",
-       "the choice is SPEC.md section 3 over the window in raster order; the stochastic rule's "
-       "random draws are free choices among the minima and among the free candidates",
-       "s_range = 1 (a 3 x 3 window) and 1..6 robots with symbolic positions"},
-      run}};
+      {"the choice lemma: the spec's choose_rule interpreted symbolically over a window of any contents "
+       "(each cell present or not, blocked or not, any pheromone; phi = 1 so a key is the pheromone); the "
+       "stochastic rules' draws are free choices in their ranges; indices as 8-bit integers",
+       "the planning step: map size, obstacle map and robot cells symbolic; robots decide in index order "
+       "and see earlier robots' moves at once, each choosing any target the lemma allows; proved for one "
+       "mover and one other robot, which covers any number of robots (occupancy is pairwise)",
+       "s_range 1..3",
+       "a counterexample counts only when the executed choose() reproduces it (stochastic rules: with "
+       "one of the seeds 0..999)"},
+      run,
+      {"exploration::choose_rule", "exploration::pheromone_key_rule"}}};
 }
 
 }  // namespace swarmcheck::proofs

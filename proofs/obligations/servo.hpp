@@ -1,22 +1,20 @@
 #pragma once
-// The servo mix and saturation of SPEC.md section 8 step 6 over IEEE doubles (FP theory,
-// fpa_sort<64>, round to nearest even, no fused multiply-add: the build uses -ffp-contract=off).
-// Exposed so that the tests can check the encoding against spec/exploration/controller.cpp.
-#include "proofs/obligations/z3.hpp"
+// The servo commands as the spec computes them (servo_mix_rule, then saturate_servo_rule or
+// thesis_clamp_rule, spec/exploration/controller.cpp), interpreted over IEEE doubles (FP
+// theory, round to nearest even, no fused multiply-add: the build uses -ffp-contract=off).
+#include "proofs/obligations/translate.hpp"
 #include "spec/exploration/types.hpp"
 
 namespace swarmcheck::proofs::servo {
 
-// saturate_servo: NaN -> 0, > 1 -> 1, < -1 -> -1, else the value.
-z3::expr saturate(const z3::expr& u);
-// thesis_clamp: if (u > 1) u = 1; else if (u < -1) u = -1;
-z3::expr thesis_clamp(const z3::expr& u);
+enum class Clamp { spec, thesis };
 
-struct Mix {
+struct Commands {
   z3::expr left, right;
 };
-// servo_left = (1/r) v + (L/(2r)) w, servo_right = -((1/r) v - (L/(2r)) w), before saturation;
-// the constants 1/r and L/(2r) are the doubles the spec computes.
-Mix mix(const exploration::RobotParams& rp, const z3::expr& v, const z3::expr& w);
+
+// The two saturated servo commands for the linear and turn commands v and w (FP terms).
+Commands commands(Translator& t, const exploration::RobotParams& rp, const sym::Real& v, const sym::Real& w,
+                  Clamp clamp);
 
 }  // namespace swarmcheck::proofs::servo

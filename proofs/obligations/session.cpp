@@ -22,6 +22,28 @@ z3::solver Session::make_nonlinear_solver() {
   return s;
 }
 
+namespace {
+constexpr const char* kPreprocess = "(then simplify propagate-values solve-eqs elim-term-ite simplify smt)";
+}
+
+z3::solver Session::make_preprocessed_solver() {
+  const z3::tactic t = z3::tactic(ctx_, "simplify") & z3::tactic(ctx_, "propagate-values") &
+                       z3::tactic(ctx_, "solve-eqs") & z3::tactic(ctx_, "elim-term-ite") &
+                       z3::tactic(ctx_, "simplify") & z3::tactic(ctx_, "smt");
+  z3::solver s = t.mk_solver();
+  s.set("timeout", timeout_ms_);
+  return s;
+}
+
+z3::check_result Session::check_preprocessed(z3::solver& s, const std::string& label) {
+  const z3::check_result r = check(s, label);
+  std::string& text = queries_.back().smt2;
+  const std::string plain = "(check-sat)";
+  const std::size_t at = text.rfind(plain);
+  if (at != std::string::npos) text.replace(at, plain.size(), std::string("(check-sat-using ") + kPreprocess + ")");
+  return r;
+}
+
 z3::check_result Session::check(z3::solver& s, const std::string& label) {
   // to_smt2() already ends in (check-sat).
   QueryRecord q{label, s.to_smt2(), ""};

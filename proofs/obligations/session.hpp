@@ -26,8 +26,14 @@ class Session {
   // A solver for nonlinear real arithmetic: the qfnra-nlsat tactic (VERIFICATION.md: the
   // default solver may give up or ignore its timeout on these).
   z3::solver make_nonlinear_solver();
+  // A solver that simplifies, solves equations and eliminates term-level if-then-else before
+  // the SMT core: queries that unroll a rule's selects over integers and reals (the choice) are
+  // instant this way and can time out without it. Check its queries with check_preprocessed.
+  z3::solver make_preprocessed_solver();
   // Checks the solver's assertions and logs the query and its answer.
   z3::check_result check(z3::solver& s, const std::string& label);
+  // The same for a make_preprocessed_solver() solver: its SMT-LIB2 names the same tactic.
+  z3::check_result check_preprocessed(z3::solver& s, const std::string& label);
 
   const std::vector<QueryRecord>& queries() const { return queries_; }
 

@@ -6,85 +6,155 @@
 namespace swarmcheck::exploration {
 namespace {
 
-int32_t best_thesis(std::span<const Candidate> c, const ChoiceTerms& t) {
-  double sum = 0.0;
-  for (const auto& x : c) sum += pheromone_key(x.tau, t.phi) * t.eta_term;
-  double best_value = t.thesis_best_start / sum;
-  int32_t best = -1;
-  for (std::size_t k = 0; k < c.size(); ++k) {
-    const double prob = pheromone_key(c[k].tau, t.phi) * t.eta_term / sum;
-    if (prob <= best_value) {
-      best_value = prob;
-      best = static_cast<int32_t>(k);
-    }
-  }
-  return best < 0 ? static_cast<int32_t>(c.size()) - 1 : best;   // every candidate tied
+// A draw in [0, n): the seeded generator (concrete) or a free choice (symbolic).
+int32_t draw_index(const DrawSite& site, Purpose purpose, int32_t n) {
+  return static_cast<int32_t>(uniform_index(rng_key(site.seed, site.tick, site.robot, purpose), static_cast<uint32_t>(n)));
+}
+sym::Int draw_index(const SymbolicDrawSite& site, Purpose purpose, const sym::Int& n) {
+  return sym::Int::draw(n, site.name + (purpose == Purpose::tie_break ? ".tie_break" : ".fallback"));
 }
 
-int32_t best_last_minimum(std::span<const Candidate> c, const ChoiceTerms& t) {
-  int32_t best = 0;
-  double best_key = pheromone_key(c[0].tau, t.phi);
-  for (std::size_t k = 1; k < c.size(); ++k) {
-    const double key = pheromone_key(c[k].tau, t.phi);
-    if (key <= best_key) {
-      best_key = key;
-      best = static_cast<int32_t>(k);
-    }
+// The candidate at a (possibly symbolic) index is blocked.
+bool blocked_at(std::span<const Candidate> c, int32_t k) { return c[static_cast<std::size_t>(k)].blocked; }
+sym::Bool blocked_at(std::span<const SymbolicCandidate> c, const sym::Int& k) {
+  sym::Bool b(false);
+  for (std::size_t i = 0; i < c.size(); ++i) b = b || (k == static_cast<int32_t>(i) && c[i].blocked);
+  return b;
+}
+
+// Whether a candidate is in the list (always, for a concrete one).
+constexpr bool present(const Candidate&) { return true; }
+const sym::Bool& present(const SymbolicCandidate& c) { return c.present; }
+
+template <class D>
+typename D::Int index(std::size_t k) {
+  return typename D::Int(static_cast<int32_t>(k));
+}
+
+template <class D>
+typename D::Int best_thesis(std::span<const CandidateOf<D>> c, const ChoiceTermsT<D>& t) {
+  using Real = typename D::Real;
+  Real sum(0.0);
+  typename D::Int last(-1);
+  for (std::size_t k = 0; k < c.size(); ++k) {
+    sum = num::select(present(c[k]), sum + pheromone_key_rule<D>(c[k].tau, t.phi) * t.eta_term, sum);
+    last = num::select(present(c[k]), index<D>(k), last);
+  }
+  Real best_value = t.thesis_best_start / sum;
+  typename D::Int best(-1);
+  for (std::size_t k = 0; k < c.size(); ++k) {
+    const Real prob = pheromone_key_rule<D>(c[k].tau, t.phi) * t.eta_term / sum;
+    const typename D::Bool take = present(c[k]) && prob <= best_value;
+    best_value = num::select(take, prob, best_value);
+    best = num::select(take, index<D>(k), best);
+  }
+  return num::select(best < 0, last, best);   // every candidate tied: the last one
+}
+
+template <class D>
+typename D::Int best_last_minimum(std::span<const CandidateOf<D>> c, const ChoiceTermsT<D>& t) {
+  typename D::Int best(-1);
+  typename D::Real best_key(0.0);
+  for (std::size_t k = 0; k < c.size(); ++k) {
+    const typename D::Real key = pheromone_key_rule<D>(c[k].tau, t.phi);
+    const typename D::Bool take = present(c[k]) && (best < 0 || key <= best_key);
+    best_key = num::select(take, key, best_key);
+    best = num::select(take, index<D>(k), best);
   }
   return best;
 }
 
-int32_t best_uniform_minimum(std::span<const Candidate> c, const ChoiceTerms& t, const DrawSite& site) {
-  double min_key = pheromone_key(c[0].tau, t.phi);
-  for (std::size_t k = 1; k < c.size(); ++k) min_key = std::fmin(min_key, pheromone_key(c[k].tau, t.phi));
-  uint32_t ties = 0;
-  for (const auto& x : c) ties += pheromone_key(x.tau, t.phi) == min_key ? 1U : 0U;
-  SWARM_DEMAND(ties >= 1);
-  uint32_t pick = uniform_index(rng_key(site.seed, site.tick, site.robot, Purpose::tie_break), ties);
-  for (std::size_t k = 0; k < c.size(); ++k)
-    if (pheromone_key(c[k].tau, t.phi) == min_key && pick-- == 0) return static_cast<int32_t>(k);
-  SWARM_DEMAND(false);
-  return -1;
+template <class D>
+typename D::Int best_uniform_minimum(std::span<const CandidateOf<D>> c, const ChoiceTermsT<D>& t,
+                                     const DrawSiteOf<D>& site) {
+  using Int = typename D::Int;
+  typename D::Real min_key(0.0);
+  typename D::Bool any(false);
+  for (std::size_t k = 0; k < c.size(); ++k) {
+    const typename D::Real key = pheromone_key_rule<D>(c[k].tau, t.phi);
+    min_key = num::select(present(c[k]), num::select(any, num::fmin(min_key, key), key), min_key);
+    any = any || present(c[k]);
+  }
+  Int ties(0);
+  for (const auto& x : c)
+    ties = ties + num::select(present(x) && pheromone_key_rule<D>(x.tau, t.phi) == min_key, Int(1), Int(0));
+  if constexpr (num::is_concrete<D>) SWARM_DEMAND(ties >= 1);
+  const Int pick = draw_index(site, Purpose::tie_break, ties);
+  Int seen(0), chosen(-1);
+  for (std::size_t k = 0; k < c.size(); ++k) {
+    const typename D::Bool is_min = present(c[k]) && pheromone_key_rule<D>(c[k].tau, t.phi) == min_key;
+    chosen = num::select(is_min && seen == pick, index<D>(k), chosen);
+    seen = seen + num::select(is_min, Int(1), Int(0));
+  }
+  return chosen;
 }
 
-int32_t fallback_first_free(std::span<const Candidate> c) {
-  for (std::size_t k = 0; k < c.size(); ++k)
-    if (!c[k].blocked) return static_cast<int32_t>(k);
-  return -1;
+template <class D>
+typename D::Int fallback_first_free(std::span<const CandidateOf<D>> c) {
+  typename D::Int first(-1);   // built backwards: the first free one wins
+  for (std::size_t k = c.size(); k-- > 0;) first = num::select(present(c[k]) && !c[k].blocked, index<D>(k), first);
+  return first;
 }
 
-int32_t fallback_uniform_free(std::span<const Candidate> c, const DrawSite& site) {
-  uint32_t n_free = 0;
-  for (const auto& x : c) n_free += x.blocked ? 0U : 1U;
-  if (n_free == 0) return -1;
-  uint32_t pick = uniform_index(rng_key(site.seed, site.tick, site.robot, Purpose::fallback), n_free);
-  for (std::size_t k = 0; k < c.size(); ++k)
-    if (!c[k].blocked && pick-- == 0) return static_cast<int32_t>(k);
-  SWARM_DEMAND(false);
-  return -1;
+template <class D>
+typename D::Int fallback_uniform_free(std::span<const CandidateOf<D>> c, const DrawSiteOf<D>& site) {
+  using Int = typename D::Int;
+  Int n_free(0);
+  for (const auto& x : c) n_free = n_free + num::select(present(x) && !x.blocked, Int(1), Int(0));
+  return num::branch(n_free == 0, [] { return Int(-1); }, [&] {
+    const Int pick = draw_index(site, Purpose::fallback, n_free);
+    Int seen(0), chosen(-1);
+    for (std::size_t k = 0; k < c.size(); ++k) {
+      const typename D::Bool free = present(c[k]) && !c[k].blocked;
+      chosen = num::select(free && seen == pick, index<D>(k), chosen);
+      seen = seen + num::select(free, Int(1), Int(0));
+    }
+    return chosen;
+  });
 }
 
-int32_t best_of(const RuleDescriptor& rules, std::span<const Candidate> c, const ChoiceTerms& t,
-                const DrawSite& site) {
+template <class D>
+typename D::Int best_of(const RuleDescriptor& rules, std::span<const CandidateOf<D>> c, const ChoiceTermsT<D>& t,
+                        const DrawSiteOf<D>& site) {
   switch (rules.best) {
-    case BestRule::thesis_normalised: return best_thesis(c, t);
-    case BestRule::last_minimum: return best_last_minimum(c, t);
-    case BestRule::uniform_minimum: return best_uniform_minimum(c, t, site);
+    case BestRule::thesis_normalised: return best_thesis<D>(c, t);
+    case BestRule::last_minimum: return best_last_minimum<D>(c, t);
+    case BestRule::uniform_minimum: return best_uniform_minimum<D>(c, t, site);
   }
   SWARM_DEMAND(false);
   return -1;
 }
 
-int32_t fallback_of(const RuleDescriptor& rules, std::span<const Candidate> c, const DrawSite& site) {
+template <class D>
+typename D::Int fallback_of(const RuleDescriptor& rules, std::span<const CandidateOf<D>> c, const DrawSiteOf<D>& site) {
   switch (rules.fallback) {
-    case FallbackRule::first_free: return fallback_first_free(c);
-    case FallbackRule::uniform_free: return fallback_uniform_free(c, site);
+    case FallbackRule::first_free: return fallback_first_free<D>(c);
+    case FallbackRule::uniform_free: return fallback_uniform_free<D>(c, site);
   }
   SWARM_DEMAND(false);
   return -1;
 }
 
 }  // namespace
+
+template <class D>
+ChoiceT<D> choose_rule(const RuleDescriptor& rules, const ChoiceTermsT<D>& terms,
+                       std::span<const CandidateOf<D>> c, const DrawSiteOf<D>& site) {
+  if (c.empty()) return ChoiceT<D>{};
+  ChoiceT<D> ch;
+  ch.best = best_of<D>(rules, c, terms, site);
+  if constexpr (num::is_concrete<D>) SWARM_DEMAND(ch.best >= 0 && ch.best < static_cast<int32_t>(c.size()));
+  const typename D::Bool blocked = blocked_at(c, ch.best);
+  ch.target = num::branch(blocked, [&] { return fallback_of<D>(rules, c, site); }, [&] { return ch.best; });
+  ch.fallback = blocked && ch.target >= 0;
+  return ch;
+}
+
+template ChoiceT<num::Concrete> choose_rule<num::Concrete>(const RuleDescriptor&, const ChoiceTermsT<num::Concrete>&,
+                                                            std::span<const Candidate>, const DrawSite&);
+template ChoiceT<num::Symbolic> choose_rule<num::Symbolic>(const RuleDescriptor&, const ChoiceTermsT<num::Symbolic>&,
+                                                            std::span<const SymbolicCandidate>,
+                                                            const SymbolicDrawSite&);
 
 ChoiceTerms choice_terms(const Params& p) {
   const double eta_term = std::pow(p.eta, p.lambda);
@@ -93,17 +163,7 @@ ChoiceTerms choice_terms(const Params& p) {
 
 Choice choose(const RuleDescriptor& rules, const ChoiceTerms& terms, std::span<const Candidate> c,
               const DrawSite& site) {
-  if (c.empty()) return Choice{};
-  Choice ch;
-  ch.best = best_of(rules, c, terms, site);
-  SWARM_DEMAND(ch.best >= 0 && ch.best < static_cast<int32_t>(c.size()));
-  if (!c[static_cast<std::size_t>(ch.best)].blocked) {
-    ch.target = ch.best;
-  } else {
-    ch.target = fallback_of(rules, c, site);
-    ch.fallback = ch.target >= 0;
-  }
-  return ch;
+  return choose_rule<num::Concrete>(rules, terms, c, site);
 }
 
 RobotDecision decide(const RuleDescriptor& rules, CellIndex current, std::span<const Candidate> c,

@@ -19,11 +19,17 @@
 #include <cmath>
 #include <cstdint>
 #include <span>
+#include <string>
+#include <type_traits>
 
 #include "spec/exploration/rule_set.hpp"
 #include "spec/exploration/types.hpp"
+#include "spec/util/num.hpp"
 
 namespace swarmcheck::exploration {
+
+// The rules are written once over a domain D (spec/util/num.hpp) and instantiated in
+// choice.cpp for num::Concrete (what runs) and num::Symbolic (what proofs/ proves).
 
 struct Candidate {
   CellIndex cell;
@@ -31,27 +37,44 @@ struct Candidate {
   bool blocked;    // obstacle or occupied
 };
 
-struct Choice {
-  int32_t best = -1;     // index into the candidates of the best; -1 if there are none
-  int32_t target = -1;   // index of the cell moved to; -1: the robot stays
-  bool fallback = false; // the best was blocked and target is a free substitute
+// A symbolic candidate may be absent (a window cell outside a symbolic map): the rules skip
+// it. A concrete candidate list holds only present cells.
+struct SymbolicCandidate {
+  sym::Real tau;
+  sym::Bool blocked;
+  sym::Bool present;
 };
 
-// The parts of the choice that depend only on the parameters: computed once per run.
-struct ChoiceTerms {
-  double phi;
-  double eta_term;            // pow(eta, lambda), the same for every cell
-  double thesis_best_start;   // pow(1000, phi) * eta_term (divided by each robot's sum)
+template <class D>
+using CandidateOf = std::conditional_t<num::is_concrete<D>, Candidate, SymbolicCandidate>;
+
+template <class D>
+struct ChoiceT {
+  typename D::Int best = -1;     // index into the candidates of the best; -1 if there are none
+  typename D::Int target = -1;   // index of the cell moved to; -1: the robot stays
+  typename D::Bool fallback = false;   // the best was blocked and target is a free substitute
 };
+using Choice = ChoiceT<num::Concrete>;
+
+// The parts of the choice that depend only on the parameters: computed once per run.
+template <class D>
+struct ChoiceTermsT {
+  typename D::Real phi;
+  typename D::Real eta_term;            // pow(eta, lambda), the same for every cell
+  typename D::Real thesis_best_start;   // pow(1000, phi) * eta_term (divided by each robot's sum)
+};
+using ChoiceTerms = ChoiceTermsT<num::Concrete>;
 ChoiceTerms choice_terms(const Params& p);
 
 // pow(tau, phi), with the exact shortcuts pow(x, 1) = x and pow(x, 0) = 1 (IEEE 754 pow:
 // the result is exactly representable, so a pow accurate to within an ulp returns it).
-inline double pheromone_key(double tau, double phi) {
-  if (phi == 1.0) return tau;
-  if (phi == 0.0) return 1.0;
-  return std::pow(tau, phi);
+template <class D>
+typename D::Real pheromone_key_rule(const typename D::Real& tau, const typename D::Real& phi) {
+  using Real = typename D::Real;
+  return num::branch(phi == 1.0, [&] { return tau; },
+                     [&] { return num::branch(phi == 0.0, [] { return Real(1.0); }, [&] { return num::pow(tau, phi); }); });
 }
+inline double pheromone_key(double tau, double phi) { return pheromone_key_rule<num::Concrete>(tau, phi); }
 
 // Where a decision draws its random numbers from (only the uniform rules draw).
 struct DrawSite {
@@ -59,6 +82,17 @@ struct DrawSite {
   int64_t tick;
   int32_t robot;
 };
+// In a proof a draw is a free choice in its range, named after its site.
+struct SymbolicDrawSite {
+  std::string name;
+};
+template <class D>
+using DrawSiteOf = std::conditional_t<num::is_concrete<D>, DrawSite, SymbolicDrawSite>;
+
+// The choice of one robot: the rule set's best rule, then its fallback rule if the best is blocked.
+template <class D>
+ChoiceT<D> choose_rule(const RuleDescriptor& rules, const ChoiceTermsT<D>& terms,
+                       std::span<const CandidateOf<D>> candidates, const DrawSiteOf<D>& site);
 
 Choice choose(const RuleDescriptor& rules, const ChoiceTerms& terms, std::span<const Candidate> candidates,
               const DrawSite& site);

@@ -21,8 +21,82 @@
 //   each servo saturated to [-1, 1], NaN to 0.
 // wrap(x) is in (-pi, pi].
 #include "spec/exploration/types.hpp"
+#include "spec/util/num.hpp"
 
 namespace swarmcheck::exploration {
+
+// ---- The rules, once, over a domain D (spec/util/num.hpp): controller.cpp instantiates them
+// for num::Concrete (what runs) and num::Symbolic (what proofs/ proves). ----
+
+template <class D>
+struct ControllerParamsT {   // the RobotParams a controller step reads
+  typename D::Real tolerance_m, orient_tolerance_rad, reorient_rad, k_v, k_beta, wheel_radius_m,
+      half_axle_m;
+};
+
+template <class D>
+struct ControllerCoreT {     // ControllerState with its two flags as booleans
+  typename D::Bool idle;     // onDestinationOutput == 1
+  typename D::Bool driving;  // maneuver == 2
+  typename D::Real beta_rad, servo_left, servo_right;
+};
+
+template <class D>
+struct ControllerInputsT {
+  typename D::Real x_m, y_m, theta_rad, x_desired_m, y_desired_m;
+  typename D::Bool on_destination_input;
+};
+
+template <class D>
+struct ServoPairT {
+  typename D::Real left, right;
+};
+
+template <class D>
+struct DeltaT {
+  typename D::Real dx, dy;
+};
+
+// Saturation of a servo command: [-1, 1], NaN to 0.
+template <class D>
+typename D::Real saturate_servo_rule(const typename D::Real& u);
+// The thesis's clamp (if (u > 1) u = 1; else if (u < -1) u = -1;): NaN passes through.
+template <class D>
+typename D::Real thesis_clamp_rule(const typename D::Real& u);
+// The unsaturated servo commands of a linear command v and a turn command w.
+template <class D>
+ServoPairT<D> servo_mix_rule(const ControllerParamsT<D>& p, const typename D::Real& v,
+                             const typename D::Real& w);
+// The atan2 fix of maneuver 1: unless both deltas are below the tolerance, a delta below it is 0.
+template <class D>
+DeltaT<D> atan2_fix_rule(const DeltaT<D>& d, const typename D::Real& tolerance_m);
+// wrap(atan2(dy, dx) - theta - pi/2), in (-pi, pi].
+template <class D>
+typename D::Real bearing_error_rule(const DeltaT<D>& d, const typename D::Real& theta_rad);
+// Arrival: |dx| + |dy| < tolerance.
+template <class D>
+typename D::Bool arrived_rule(const DeltaT<D>& d, const typename D::Real& tolerance_m);
+// One controller step (the whole of controller_step, on booleans).
+template <class D>
+ControllerCoreT<D> controller_rule(const ControllerParamsT<D>& p, const ControllerCoreT<D>& s,
+                                   const ControllerInputsT<D>& in);
+
+ControllerParamsT<num::Concrete> controller_params(const RobotParams& rp);
+// The same parameters as symbolic literals (the doubles the code reads).
+ControllerParamsT<num::Symbolic> symbolic_controller_params(const RobotParams& rp);
+
+template <class D>
+ControllerCoreT<D> merge(const typename D::Bool& c, const ControllerCoreT<D>& a, const ControllerCoreT<D>& b) {
+  return {num::select(c, a.idle, b.idle), num::select(c, a.driving, b.driving),
+          num::select(c, a.beta_rad, b.beta_rad), num::select(c, a.servo_left, b.servo_left),
+          num::select(c, a.servo_right, b.servo_right)};
+}
+inline ControllerCoreT<num::Symbolic> merge(const sym::Bool& c, const ControllerCoreT<num::Symbolic>& a,
+                                            const ControllerCoreT<num::Symbolic>& b) {
+  return merge<num::Symbolic>(c, a, b);
+}
+
+// ---- The concrete API (what model/ and impl/ call). ----
 
 struct ControllerInputs {
   BodyState pose;

@@ -6,8 +6,17 @@
 
 namespace swarmcheck::exploration {
 
+template <class D>
+typename D::Real evaporation_factor_rule(const typename D::Real& ertu, const typename D::Real& step_size) {
+  const typename D::Real f = 1.0 - ertu * step_size;
+  return num::select(0.0 < f, f, typename D::Real(0.0));
+}
+
+template double evaporation_factor_rule<num::Concrete>(const double&, const double&);
+template sym::Real evaporation_factor_rule<num::Symbolic>(const sym::Real&, const sym::Real&);
+
 double evaporation_factor(const Params& p) {
-  const double f = std::max(0.0, 1.0 - p.ertu * p.step_size);
+  const double f = evaporation_factor_rule<num::Concrete>(p.ertu, p.step_size);
   SWARM_DEMAND(f >= 0.0 && f <= 1.0);
   return f;
 }

@@ -12,8 +12,22 @@
 #include <cstdint>
 
 #include "spec/exploration/types.hpp"
+#include "spec/util/num.hpp"
 
 namespace swarmcheck::exploration {
+
+// The rules, once, over a domain D (spec/util/num.hpp). The evaporation factor per step,
+// f = max(0, 1 - ertu * step_size) (decay.cpp instantiates it for both domains):
+template <class D>
+typename D::Real evaporation_factor_rule(const typename D::Real& ertu, const typename D::Real& step_size);
+
+// The thesis's updatePheromone for one cell: ph -= (ertu * step_size) * ph; clamp at 0. Defined
+// here, inline, because every cell of a thesis run goes through it each step.
+template <class D>
+typename D::Real thesis_evaporate_rule(const typename D::Real& ph, const typename D::Real& ertu_times_dt) {
+  const typename D::Real after = ph - ertu_times_dt * ph;
+  return num::select(after < 0.0, typename D::Real(0.0), after);
+}
 
 struct DecayTable {
   std::array<double, 63> pow2{};   // pow2[i] = f^(2^i); k < 2^63
@@ -29,8 +43,7 @@ double decay_factor(const DecayTable& table, int64_t k);
 
 // The thesis's updatePheromone for one cell: ph -= (ertu * step_size) * ph; clamp at 0.
 inline double thesis_evaporate(double ph, double ertu_times_dt) {
-  ph -= ertu_times_dt * ph;
-  return ph < 0 ? 0.0 : ph;
+  return thesis_evaporate_rule<num::Concrete>(ph, ertu_times_dt);
 }
 
 }  // namespace swarmcheck::exploration

@@ -9,8 +9,19 @@
 
 #include "spec/exploration/neighbourhood.hpp"
 #include "spec/exploration/types.hpp"
+#include "spec/util/num.hpp"
 
 namespace swarmcheck::exploration {
+
+template <class D>
+struct DepositParamsT {
+  typename D::Real max_ph, a1, epsilon, a2;
+};
+
+// The rule, once (deposit.cpp instantiates it for num::Concrete and num::Symbolic): the
+// pheromone left at distance d (cells) from the deposit centre, max_ph exp(-d / a1) + epsilon / a2.
+template <class D>
+typename D::Real deposit_amount_rule(const DepositParamsT<D>& p, const typename D::Real& distance);
 
 class DepositKernel {
  public:

@@ -15,9 +15,66 @@
 // Under Jacobi the Environment's output is 1 for exactly one step, which every idle controller
 // reads one step later, while the Environment reads their old (raised) outputs and resets its
 // flag; by the time it reads again they are lowered. controller.hpp implements this side.
+//
+// The epoch-numbered handshake (not in the thesis; proofs/ shows it survives the orderings the
+// flag handshake does not): the Environment shows an epoch (mod kEpochs); it plans when every
+// controller shows (its epoch = the Environment's, arrived), then increments the epoch; a
+// controller accepts when it reads an epoch other than the one it last accepted, and shows
+// arrived once its robot is at the waypoint (arrived_rule).
+//
+// Each rule is written once over a domain D (spec/util/num.hpp) and instantiated in
+// handshake.cpp for num::Concrete (what runs) and num::Symbolic (what proofs/ proves).
+#include <span>
+
 #include "spec/exploration/types.hpp"
+#include "spec/util/num.hpp"
 
 namespace swarmcheck::exploration {
+
+inline constexpr int32_t kEpochs = 4;
+
+template <class D>
+struct HandshakeStateT {
+  typename D::Bool flag, output;   // flag == 1, onDestinationOutput == 1
+};
+
+template <class D>
+struct HandshakeStepT {
+  typename D::Bool plan;
+  HandshakeStateT<D> next;
+};
+
+template <class D>
+HandshakeStepT<D> environment_handshake_rule(const HandshakeStateT<D>& s, const typename D::Bool& all_arrived);
+
+// The Environment's planning input: every controller's onDestinationOutput is 1. The one
+// function the master (model and impl) and the proofs call.
+template <class D>
+typename D::Bool all_arrived_rule(std::span<const typename D::Bool> outputs);
+
+template <class D>
+struct EpochStepT {
+  typename D::Bool plan;
+  typename D::Int epoch;   // the Environment's epoch after the step
+};
+
+template <class D>
+EpochStepT<D> epoch_environment_rule(const typename D::Int& epoch, std::span<const typename D::Int> acks,
+                                     std::span<const typename D::Bool> done);
+
+template <class D>
+struct EpochControllerT {
+  typename D::Int ack;     // the epoch it last accepted
+  typename D::Bool done;   // its robot has reached that epoch's waypoint
+};
+
+// One epoch controller step: reads the Environment's epoch and whether its robot is at its
+// waypoint now; `accepted` is set when it takes a new waypoint.
+template <class D>
+EpochControllerT<D> epoch_controller_rule(const EpochControllerT<D>& s, const typename D::Int& env_epoch,
+                                          const typename D::Bool& at_waypoint);
+
+// ---- The concrete API. ----
 
 struct HandshakeStep {
   bool plan;
@@ -26,10 +83,6 @@ struct HandshakeStep {
 
 inline HandshakeState initial_handshake() { return HandshakeState{1, 0}; }
 
-inline HandshakeStep environment_handshake(HandshakeState s, bool all_arrived) {
-  if (all_arrived && s.flag == 1) return HandshakeStep{true, HandshakeState{0, 1}};
-  if (all_arrived && s.flag == 0) return HandshakeStep{false, HandshakeState{1, 0}};
-  return HandshakeStep{false, s};
-}
+HandshakeStep environment_handshake(HandshakeState s, bool all_arrived);
 
 }  // namespace swarmcheck::exploration

@@ -26,12 +26,9 @@
 
 namespace swarmcheck::exploration {
 
-// The Environment's input: every controller idle at its waypoint.
-inline bool all_arrived(std::span<const ControllerState> controllers) {
-  for (const ControllerState& c : controllers)
-    if (c.on_destination_output != 1) return false;
-  return true;
-}
+// The Environment's input: every controller idle at its waypoint (all_arrived_rule of
+// handshake.hpp over their onDestinationOutput).
+bool all_arrived(std::span<const ControllerState> controllers);
 
 template <class System>
 void master_step(Mode mode, System& system) {

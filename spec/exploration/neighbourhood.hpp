@@ -27,11 +27,8 @@ inline bool in_map(CellIndex c, int32_t map_size) {
 }
 
 // The pheromone a robot leaves on a cell (di, dj) cells away from the deposit centre:
-// max_ph * exp(-d / a1) + epsilon / a2, d the Euclidean distance between the cell centres.
-inline double deposit_amount(const Params& p, int32_t di, int32_t dj) {
-  const double d = std::sqrt(static_cast<double>(int64_t{di} * di + int64_t{dj} * dj));
-  return p.max_ph * std::exp(-d / p.a1) + p.epsilon / p.a2;
-}
+// deposit_amount_rule (deposit.hpp) at d, the Euclidean distance between the cell centres.
+double deposit_amount(const Params& p, int32_t di, int32_t dj);
 
 // The cell whose square contains a point (thesis findCellFromCoordinates, any cell size).
 inline CellIndex cell_of(Point_m p, double cell_size_m) {

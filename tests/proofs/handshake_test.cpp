@@ -17,10 +17,17 @@
 namespace swarmcheck::proofs::handshake {
 namespace {
 
+// A robot on its waypoint (0.5, 0.5) or 3 m along its row, heading 0; waypoints stay put.
+std::vector<RobotInput> poses(const std::vector<bool>& arrival) {
+  std::vector<RobotInput> in;
+  for (bool at : arrival) in.push_back(RobotInput{at ? 0.5 : 3.5, 0.5, 0.0, 0.5, 0.5});
+  return in;
+}
+
 std::string run_arrivals(const Variant& v, int robots, const std::vector<std::vector<bool>>& seq) {
   ConcreteState s = initial_state(v, robots);
   for (const auto& arrival : seq) {
-    const StepEvents ev = step(v, s, arrival);
+    const StepEvents ev = step(v, exploration::RobotParams{}, s, poses(arrival));
     if (!ev.violated.empty()) return ev.violated;
   }
   return "";
@@ -61,7 +68,8 @@ TEST(HandshakeProof, ConcreteSearchCatchesTheGaussSeidelMasterAndTheLateControll
   EXPECT_EQ(first_violation(Variant{Master::jacobi, Protocol::flag, false}, 6), "");
 }
 
-// The Z3 transition system, with the arrivals fixed, has exactly the concrete run's plans.
+// The Z3 transition system, with the poses and parameters fixed, has exactly the concrete
+// run's plans, acceptances and violations.
 RC_GTEST_PROP(HandshakeProof, Z3EncodingComputesTheConcreteRun, ()) {
   const int robots = *rc::gen::inRange(1, 4);
   const Variant v{*rc::gen::element(Master::jacobi, Master::gauss_seidel),
@@ -71,16 +79,24 @@ RC_GTEST_PROP(HandshakeProof, Z3EncodingComputesTheConcreteRun, ()) {
   Encoding enc(c, v, robots, false);
   z3::solver s(c);
   s.add(enc.init(0));
+  const exploration::RobotParams rp;
+  auto real = [&](double x) { return c.real_val(std::to_string(x).c_str()); };
+  s.add(enc.tolerance() == real(rp.tolerance_m) && enc.orient_tolerance() == real(rp.orient_tolerance_rad) &&
+        enc.reorient() == real(rp.reorient_rad));
+  for (int i = 0; i < robots; ++i)
+    s.add(enc.frame(0).wx[static_cast<std::size_t>(i)] == real(0.5) && enc.frame(0).wy[static_cast<std::size_t>(i)] == real(0.5));
   for (std::size_t t = 0; t < seq.size(); ++t) {
     s.add(enc.trans(static_cast<int>(t)));
-    for (int i = 0; i < robots; ++i)
-      s.add(enc.step(static_cast<int>(t)).arrival[static_cast<std::size_t>(i)] == c.bool_val(seq[t][static_cast<std::size_t>(i)]));
+    const Step& st = enc.step(static_cast<int>(t));
+    for (std::size_t i = 0; i < static_cast<std::size_t>(robots); ++i)
+      s.add(st.x[i] == real(seq[t][i] ? 0.5 : 3.5) && st.y[i] == real(0.5) && st.theta[i] == real(0.0) &&
+            st.new_wx[i] == real(0.5) && st.new_wy[i] == real(0.5));
   }
   RC_ASSERT(s.check() == z3::sat);
   const z3::model m = s.get_model();
   ConcreteState cs = initial_state(v, robots);
   for (std::size_t t = 0; t < seq.size(); ++t) {
-    const StepEvents ev = step(v, cs, seq[t]);
+    const StepEvents ev = step(v, rp, cs, poses(seq[t]));
     const Step& st = enc.step(static_cast<int>(t));
     RC_ASSERT(m.eval(st.plan, true).is_true() == ev.plan);
     RC_ASSERT(m.eval(st.early_plan || st.stale_accept, true).is_true() == !ev.violated.empty());

@@ -1,6 +1,6 @@
 // occupancy on concrete runs: random model steps of the fixed rule sets keep every robot in
-// the map, off obstacles and alone in its cell; and the proof's symbolic deterministic choice
-// picks the cell the spec's deterministic choice picks.
+// the map, off obstacles and alone in its cell; and the spec's choose_rule interpreted in Z3
+// picks the cell the executed choose() picks.
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
@@ -27,30 +27,58 @@ RC_GTEST_PROP(OccupancyProof, RandomModelStepsOfTheFixedRuleSetsKeepRobotsApartA
   }
 }
 
-RC_GTEST_PROP(OccupancyProof, SymbolicDeterministicChoiceIsTheSpecsChoice, ()) {
-  // A 3 x 3 window: 8 candidate slots in raster order, some out of the map.
-  const auto valid = *rc::gen::container<std::vector<bool>>(8, rc::gen::arbitrary<bool>());
-  const auto tau = *rc::gen::container<std::vector<int>>(8, rc::gen::inRange(0, 3));   // ties
-  const auto blocked = *rc::gen::container<std::vector<bool>>(8, rc::gen::arbitrary<bool>());
+// The two interpretations of choose_rule agree: interpreted in Z3 over a window with absent
+// cells and evaluated at the window's values, it picks the cell the executed choose() picks on
+// the window's present cells.
+RC_GTEST_PROP(OccupancyProof, SymbolicChoiceInZ3IsTheExecutedChoiceOnThePresentCells, ()) {
+  const auto set = *rc::gen::element(RuleSet::deterministic, RuleSet::thesis);
+  const int s_range = *rc::gen::inRange(1, 3);
+  const auto cands = occupancy::symbolic_window(s_range, "w");
+  const std::size_t n = cands.size();
+  const auto present = *rc::gen::container<std::vector<bool>>(n, rc::gen::arbitrary<bool>());
+  // Ties; the thesis rule divides by the sum of the keys, which the real theory cannot do at 0
+  // (IEEE gives inf and NaN there), so its pheromone is positive.
+  const int lowest = set == RuleSet::thesis ? 1 : 0;
+  const auto tau = *rc::gen::container<std::vector<int>>(n, rc::gen::inRange(lowest, lowest + 3));
+  const auto blocked = *rc::gen::container<std::vector<bool>>(n, rc::gen::arbitrary<bool>());
   Params p{};
   p.phi = 1.0;
   p.lambda = 1.0;
   p.eta = 1.0;
+  const ChoiceTerms terms = choice_terms(p);
   std::vector<Candidate> spec_cands;
   std::vector<int> slot_of;   // spec index -> slot
   z3::context c;
-  std::vector<occupancy::SymCandidate> sym;
-  for (int k = 0; k < 8; ++k) {
-    const auto u = static_cast<std::size_t>(k);
-    sym.push_back({c.bool_val(valid[u]), c.real_val(tau[u]), c.bool_val(blocked[u])});
-    if (!valid[u]) continue;
-    spec_cands.push_back(Candidate{CellIndex{k / 3, k % 3}, static_cast<double>(tau[u]), blocked[u]});
-    slot_of.push_back(k);
+  Translator t(c, RealTheory::real, false, 8);
+  const occupancy::ChoiceQuery q = occupancy::choice_query(t, rules_of(set), cands);
+  z3::expr_vector from(c), to(c);
+  from.push_back(c.real_const("eta_term"));
+  to.push_back(c.real_val(std::to_string(terms.eta_term).c_str()));
+  from.push_back(c.real_const("thesis_best_start"));
+  to.push_back(c.real_val(std::to_string(static_cast<int>(terms.thesis_best_start)).c_str()));
+  for (std::size_t k = 0; k < n; ++k) {
+    from.push_back(t(cands[k].present));
+    to.push_back(c.bool_val(present[k]));
+    from.push_back(t(cands[k].tau));
+    to.push_back(c.real_val(tau[k]));
+    from.push_back(t(cands[k].blocked));
+    to.push_back(c.bool_val(blocked[k]));
+    if (!present[k]) continue;
+    spec_cands.push_back(Candidate{CellIndex{0, static_cast<int32_t>(k)}, static_cast<double>(tau[k]), blocked[k]});
+    slot_of.push_back(static_cast<int>(k));
   }
-  const Choice ch = choose(rules_of(RuleSet::deterministic), choice_terms(p), spec_cands, DrawSite{0, 0, 0});
+  RC_PRE(terms.thesis_best_start == 1000.0);
+  const Choice ch = choose(rules_of(set), terms, spec_cands, DrawSite{0, 0, 0});
   const int expected = ch.target < 0 ? -1 : slot_of[static_cast<std::size_t>(ch.target)];
-  const z3::expr got = occupancy::deterministic_target(c, sym).simplify();
-  RC_ASSERT(got.get_numeral_int() == expected);
+  // The window's values fix the target: it is the executed choice, and nothing else.
+  z3::solver solver(c);
+  solver.add(t.side_conditions());
+  for (unsigned k = 0; k < from.size(); ++k) solver.add(from[static_cast<int>(k)] == to[static_cast<int>(k)]);
+  const z3::expr want = c.bv_val(expected, 8);
+  RC_ASSERT(solver.check() == z3::sat);
+  RC_ASSERT(solver.get_model().eval(q.target, true).get_numeral_uint() == want.get_numeral_uint());
+  solver.add(q.target != want);
+  RC_ASSERT(solver.check() == z3::unsat);
 }
 
 TEST(OccupancyProof, Z3ProvesOnePlanningStepKeepsOccupancy) {

@@ -13,7 +13,7 @@ namespace {
 TEST(ProofRunner, AProverThatNeverAnswersIsKilledAtTheDeadlineAndReportedUnknown) {
   const Obligation hangs{"hangs", "never answers", Verdict::proved, {"none"}, [](Session&) -> Outcome {
                            for (;;) ::pause();
-                         }};
+                         }, {}};
   const ObligationReport r = run_isolated(hangs, 0.5, 1000);
   EXPECT_EQ(r.result, Verdict::unknown);
   EXPECT_NE(r.detail.find("watchdog"), std::string::npos) << r.detail;
@@ -25,7 +25,7 @@ TEST(ProofRunner, AProverThatCrashesIsReportedUnknown) {
   const Obligation crashes{"crashes", "aborts", Verdict::proved, {"none"}, [](Session&) -> Outcome {
                              std::raise(SIGKILL);
                              return {};
-                           }};
+                           }, {}};
   const ObligationReport r = run_isolated(crashes, 5, 1000);
   EXPECT_EQ(r.result, Verdict::unknown);
   EXPECT_NE(r.detail.find("signal"), std::string::npos) << r.detail;
