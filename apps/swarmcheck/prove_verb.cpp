@@ -4,6 +4,7 @@
 #include "apps/swarmcheck/prove_verb.hpp"
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <filesystem>
 #include <nlohmann/json.hpp>
@@ -72,7 +73,10 @@ void print_table(const std::vector<ObligationReport>& reports, double total) {
     fmt::print("{:<32} {:<9} {:<9} {:>8.3f}{}\n", r.name, proofs::to_string(r.expected),
                proofs::to_string(r.result), r.seconds, r.met() ? "" : "   <- NOT AS EXPECTED");
   fmt::print("total {:.3f} s\n", total);
-  for (const ObligationReport& r : reports) fmt::print("\n{}: {}\n  {}\n", r.name, r.property, r.detail);
+  for (const ObligationReport& r : reports) {
+    fmt::print("\n{}: {}\n  {}\n", r.name, r.property, r.detail);
+    if (!r.reads.empty()) fmt::print("  reads: {}\n", fmt::join(r.reads, ", "));
+  }
 }
 
 Json report_json(const std::vector<ObligationReport>& reports, double total,
@@ -85,7 +89,8 @@ Json report_json(const std::vector<ObligationReport>& reports, double total,
               {"result", proofs::to_string(r.result)},
               {"met", r.met()},         {"seconds", r.seconds},
               {"queries", r.queries.size()},
-              {"detail", r.detail},     {"assumptions", r.assumptions}};
+              {"detail", r.detail},     {"assumptions", r.assumptions},
+              {"reads", r.reads}};
     if (!traces[k].empty()) j["trace"] = traces[k];
     list.push_back(j);
   }

@@ -44,6 +44,7 @@ ObligationReport skeleton(const Obligation& o) {
   r.property = o.property;
   r.expected = o.expected;
   r.assumptions = o.assumptions;
+  r.reads = o.reads;
   return r;
 }
 

@@ -16,6 +16,7 @@ struct ObligationReport {
   std::string property;
   Verdict expected = Verdict::unknown;
   std::vector<std::string> assumptions;
+  std::vector<std::string> reads;   // the spec functions whose definitions the encoding interprets
   Verdict result = Verdict::unknown;
   double seconds = 0;
   std::string detail;
