@@ -36,9 +36,7 @@ ControllerPort controller(const Variant& v, const exploration::RobotParams& rp, 
 bool environment(const Variant& v, ConcreteState& s, const std::vector<ControllerPort>& ports) {
   const std::size_t n = ports.size();
   if (v.protocol == Protocol::flag) {
-    const std::unique_ptr<bool[]> outs(new bool[n]);
-    for (std::size_t k = 0; k < n; ++k) outs[k] = ports[k].out;
-    const bool all = exploration::all_arrived_rule<C>(std::span<const bool>(outs.get(), n));
+    const bool all = exploration::all_arrived_rule<C>(n, [&](std::size_t k) { return ports[k].out; });
     const exploration::HandshakeStep hs = exploration::environment_handshake(s.env, all);
     s.env = hs.next;
     return hs.plan;

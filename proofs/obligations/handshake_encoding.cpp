@@ -150,7 +150,7 @@ Step Encoding::make_step(int t) {
       read.push_back(sbool(fmt::format("read_out_{}", i)));
       eq = eq && tr_(read.back()) == r_out[static_cast<std::size_t>(i)];
     }
-    const sym::Bool all = exploration::all_arrived_rule<S>(read);
+    const sym::Bool all = exploration::all_arrived_rule<S>(read.size(), [&](std::size_t k) { return read[k]; });
     const exploration::HandshakeStepT<S> hs =
         exploration::environment_handshake_rule<S>({sbool("flag"), sbool("env_out")}, all);
     s.plan = tr_(hs.plan);

@@ -46,6 +46,7 @@ const std::vector<Obligation>& all_obligations();
 std::vector<Obligation> servo_obligations();
 std::vector<Obligation> atan2_obligations();
 std::vector<Obligation> handshake_obligations();
+std::vector<Obligation> handshake_counter_obligations();
 std::vector<Obligation> pheromone_obligations();
 std::vector<Obligation> occupancy_obligations();
 

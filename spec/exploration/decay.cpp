@@ -12,6 +12,19 @@ typename D::Real evaporation_factor_rule(const typename D::Real& ertu, const typ
   return num::select(0.0 < f, f, typename D::Real(0.0));
 }
 
+template <class D>
+typename D::Real thesis_evaporate_rule(const typename D::Real& ph, const typename D::Real& ertu_times_dt) {
+  const typename D::Real after = ph - ertu_times_dt * ph;
+  return num::select(after < 0.0, typename D::Real(0.0), after);
+}
+
+template double thesis_evaporate_rule<num::Concrete>(const double&, const double&);
+template sym::Real thesis_evaporate_rule<num::Symbolic>(const sym::Real&, const sym::Real&);
+
+double thesis_evaporate(double ph, double ertu_times_dt) {
+  return thesis_evaporate_rule<num::Concrete>(ph, ertu_times_dt);
+}
+
 template double evaporation_factor_rule<num::Concrete>(const double&, const double&);
 template sym::Real evaporation_factor_rule<num::Symbolic>(const sym::Real&, const sym::Real&);
 

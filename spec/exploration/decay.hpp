@@ -21,13 +21,11 @@ namespace swarmcheck::exploration {
 template <class D>
 typename D::Real evaporation_factor_rule(const typename D::Real& ertu, const typename D::Real& step_size);
 
-// The thesis's updatePheromone for one cell: ph -= (ertu * step_size) * ph; clamp at 0. Defined
-// here, inline, because every cell of a thesis run goes through it each step.
+// The thesis's updatePheromone for one cell: ph -= (ertu * step_size) * ph; clamp at 0
+// (decay.cpp instantiates it for both domains; defined there, not inline, so that the proofs
+// and the executed code read the one compiled definition).
 template <class D>
-typename D::Real thesis_evaporate_rule(const typename D::Real& ph, const typename D::Real& ertu_times_dt) {
-  const typename D::Real after = ph - ertu_times_dt * ph;
-  return num::select(after < 0.0, typename D::Real(0.0), after);
-}
+typename D::Real thesis_evaporate_rule(const typename D::Real& ph, const typename D::Real& ertu_times_dt);
 
 struct DecayTable {
   std::array<double, 63> pow2{};   // pow2[i] = f^(2^i); k < 2^63
@@ -42,8 +40,6 @@ DecayTable make_decay_table(double f);
 double decay_factor(const DecayTable& table, int64_t k);
 
 // The thesis's updatePheromone for one cell: ph -= (ertu * step_size) * ph; clamp at 0.
-inline double thesis_evaporate(double ph, double ertu_times_dt) {
-  return thesis_evaporate_rule<num::Concrete>(ph, ertu_times_dt);
-}
+double thesis_evaporate(double ph, double ertu_times_dt);
 
 }  // namespace swarmcheck::exploration

@@ -1,6 +1,5 @@
 #include "spec/exploration/handshake.hpp"
 
-#include <memory>
 
 namespace swarmcheck::exploration {
 
@@ -13,9 +12,9 @@ HandshakeStepT<D> environment_handshake_rule(const HandshakeStateT<D>& s, const 
 }
 
 template <class D>
-typename D::Bool all_arrived_rule(std::span<const typename D::Bool> outputs) {
+typename D::Bool all_arrived_rule(std::size_t n, const std::function<typename D::Bool(std::size_t)>& output_of) {
   typename D::Bool all(true);
-  for (const typename D::Bool& o : outputs) all = all && o;
+  for (std::size_t k = 0; k < n; ++k) all = all && output_of(k);
   return all;
 }
 
@@ -37,7 +36,7 @@ EpochControllerT<D> epoch_controller_rule(const EpochControllerT<D>& s, const ty
 
 #define SWARMCHECK_HANDSHAKE_RULES(D)                                                                          \
   template HandshakeStepT<D> environment_handshake_rule<D>(const HandshakeStateT<D>&, const D::Bool&);        \
-  template D::Bool all_arrived_rule<D>(std::span<const D::Bool>);                                               \
+  template D::Bool all_arrived_rule<D>(std::size_t, const std::function<D::Bool(std::size_t)>&);                \
   template EpochStepT<D> epoch_environment_rule<D>(const D::Int&, std::span<const D::Int>,                     \
                                                    std::span<const D::Bool>);                                   \
   template EpochControllerT<D> epoch_controller_rule<D>(const EpochControllerT<D>&, const D::Int&, const D::Bool&);

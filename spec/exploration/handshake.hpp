@@ -24,6 +24,7 @@
 //
 // Each rule is written once over a domain D (spec/util/num.hpp) and instantiated in
 // handshake.cpp for num::Concrete (what runs) and num::Symbolic (what proofs/ proves).
+#include <functional>
 #include <span>
 
 #include "spec/exploration/types.hpp"
@@ -47,10 +48,11 @@ struct HandshakeStepT {
 template <class D>
 HandshakeStepT<D> environment_handshake_rule(const HandshakeStateT<D>& s, const typename D::Bool& all_arrived);
 
-// The Environment's planning input: every controller's onDestinationOutput is 1. The one
-// function the master (model and impl) and the proofs call.
+// The Environment's planning input: every controller's onDestinationOutput is 1, for n
+// controllers whose outputs output_of(k) gives (no copy of them on the master's hot path). The
+// one function the master (model and impl) and the proofs call.
 template <class D>
-typename D::Bool all_arrived_rule(std::span<const typename D::Bool> outputs);
+typename D::Bool all_arrived_rule(std::size_t n, const std::function<typename D::Bool(std::size_t)>& output_of);
 
 template <class D>
 struct EpochStepT {

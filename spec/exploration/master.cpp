@@ -1,17 +1,13 @@
 #include "spec/exploration/master.hpp"
 
-#include <memory>
-
 #include "spec/exploration/handshake.hpp"
 #include "spec/util/demand.hpp"
 
 namespace swarmcheck::exploration {
 
 bool all_arrived(std::span<const ControllerState> controllers) {
-  const std::size_t n = controllers.size();
-  const std::unique_ptr<bool[]> outputs(new bool[n]);
-  for (std::size_t k = 0; k < n; ++k) outputs[k] = controllers[k].on_destination_output == 1;
-  return all_arrived_rule<num::Concrete>(std::span<const bool>(outputs.get(), n));
+  return all_arrived_rule<num::Concrete>(controllers.size(),
+                                         [&](std::size_t k) { return controllers[k].on_destination_output == 1; });
 }
 
 StepRecord make_step_record(const EnvironmentState& env, uint64_t pheromone_digest,

@@ -59,7 +59,7 @@ TEST(ProveCli, JsonListsEveryObligationWithItsExpectedVerdictAllMet) {
   }
   for (const char* required : {"servo-saturation", "servo-thesis-clamp", "atan2-fix", "atan2-without-fix",
                                "handshake-safety", "handshake-gauss-seidel", "handshake-late-controller",
-                               "handshake-epoch-gauss-seidel", "handshake-epoch-late-controller",
+                               "handshake-epoch-gauss-seidel", "handshake-epoch-late-controller", "handshake-safety-any-robots",
                                "pheromone-bounds", "occupancy"})
     EXPECT_TRUE(names.count(required)) << required;
   EXPECT_LT(j.at("total_seconds").get<double>(), 60.0);
