@@ -31,7 +31,8 @@ void LazyGrid::prefetch_window(CellIndex c, int32_t s_range) const {
 }
 
 void LazyGrid::evaporate_dense() {
-  for (CellData& c : cells_) c.value = swarmcheck::exploration::thesis_evaporate(c.value, ertu_dt_);
+  if (cells_.size() == 0) return;
+  swarmcheck::exploration::thesis_evaporate_each(&cells_[0].value, cells_.size(), sizeof(CellData), ertu_dt_);
 }
 
 }  // namespace swarmcheck::impl::exploration

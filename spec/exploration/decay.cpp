@@ -25,6 +25,14 @@ double thesis_evaporate(double ph, double ertu_times_dt) {
   return thesis_evaporate_rule<num::Concrete>(ph, ertu_times_dt);
 }
 
+void thesis_evaporate_each(double* first, std::size_t count, std::size_t stride_bytes, double ertu_times_dt) {
+  auto* bytes = reinterpret_cast<unsigned char*>(first);
+  for (std::size_t k = 0; k < count; ++k) {
+    auto* v = reinterpret_cast<double*>(bytes + k * stride_bytes);
+    *v = thesis_evaporate_rule<num::Concrete>(*v, ertu_times_dt);
+  }
+}
+
 template double evaporation_factor_rule<num::Concrete>(const double&, const double&);
 template sym::Real evaporation_factor_rule<num::Symbolic>(const sym::Real&, const sym::Real&);
 

@@ -9,6 +9,7 @@
 //   F(k) = product of P[i] over the set bits i of k, multiplied in increasing i, from 1.0
 // The thesis rule set keeps the literal in-place update instead (thesis_evaporate).
 #include <array>
+#include <cstddef>
 #include <cstdint>
 
 #include "spec/exploration/types.hpp"
@@ -41,5 +42,9 @@ double decay_factor(const DecayTable& table, int64_t k);
 
 // The thesis's updatePheromone for one cell: ph -= (ertu * step_size) * ph; clamp at 0.
 double thesis_evaporate(double ph, double ertu_times_dt);
+
+// thesis_evaporate on `count` values `stride_bytes` apart (the hot loop of a thesis run: one call
+// per grid, the rule inlined into the loop in decay.cpp).
+void thesis_evaporate_each(double* first, std::size_t count, std::size_t stride_bytes, double ertu_times_dt);
 
 }  // namespace swarmcheck::exploration
