@@ -22,7 +22,7 @@ struct Box {
   }
 };
 
-constexpr double kPlotPx = 560.0, kMargin = 20.0, kTop = 56.0;
+constexpr double kMissionPlotPx = 560.0, kMissionMargin = 20.0, kMissionTop = 56.0;
 
 }  // namespace
 
@@ -54,17 +54,17 @@ std::string mission_svg(const MissionPicture& p) {
   for (const auto& path : p.paths) for (const auto& q : path) b.add(q);
   const double span = std::max({b.x1 - b.x0, b.y1 - b.y0, 1e-9});
   const double pad = 0.05 * span;
-  const double scale = kPlotPx / (span + 2 * pad);
+  const double scale = kMissionPlotPx / (span + 2 * pad);
   const double w = (b.x1 - b.x0 + 2 * pad) * scale, h = (b.y1 - b.y0 + 2 * pad) * scale;
-  auto X = [&](double x) { return kMargin + (x - b.x0 + pad) * scale; };
-  auto Y = [&](double y) { return kTop + (b.y1 + pad - y) * scale; };
+  auto X = [&](double x) { return kMissionMargin + (x - b.x0 + pad) * scale; };
+  auto Y = [&](double y) { return kMissionTop + (b.y1 + pad - y) * scale; };
   std::string out = fmt::format(
       "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{0}\" height=\"{1}\" viewBox=\"0 0 {0} {1}\" "
       "font-family=\"DejaVu Sans, sans-serif\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n",
-      num(std::max(w + 2 * kMargin, 420.0)), num(h + kTop + kMargin));
-  out += fmt::format("<text x=\"{}\" y=\"22\" font-size=\"15\" font-weight=\"bold\">{}</text>\n", num(kMargin), xml_escape(p.title));
-  out += fmt::format("<text x=\"{}\" y=\"42\" font-size=\"12\" fill=\"#444\">{}</text>\n", num(kMargin), xml_escape(p.subtitle));
-  out += fmt::format("<rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" fill=\"#fafafa\" stroke=\"#ccc\"/>\n", num(kMargin), num(kTop), num(w), num(h));
+      num(std::max(w + 2 * kMissionMargin, 420.0)), num(h + kMissionTop + kMissionMargin));
+  out += fmt::format("<text x=\"{}\" y=\"22\" font-size=\"15\" font-weight=\"bold\">{}</text>\n", num(kMissionMargin), xml_escape(p.title));
+  out += fmt::format("<text x=\"{}\" y=\"42\" font-size=\"12\" fill=\"#444\">{}</text>\n", num(kMissionMargin), xml_escape(p.subtitle));
+  out += fmt::format("<rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" fill=\"#fafafa\" stroke=\"#ccc\"/>\n", num(kMissionMargin), num(kMissionTop), num(w), num(h));
   out += "<g class=\"regions\" font-size=\"11\">\n";
   for (const auto& g : m.regions) {
     const double rw = (g.hi[0] - g.lo[0]) * scale, rh = (g.hi[1] - g.lo[1]) * scale;

@@ -8,7 +8,8 @@
 #include "spec/util/input_error.hpp"
 
 namespace swarmcheck::dse {
-namespace {
+// Named rather than anonymous: Parser (a friend of Expression, so not internal) holds Tokens.
+namespace expression_lexer {
 
 enum class Tok { end, number, text, name, lparen, rparen, comma, op };
 
@@ -31,7 +32,8 @@ std::string type_word(ValueType t) {
 bool name_start(char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '_' || c == '{'; }
 bool name_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '.'; }
 
-}  // namespace
+}  // namespace expression_lexer
+using namespace expression_lexer;
 
 // Recursive descent over a token list; builds Expression::nodes_ with types checked.
 class Parser {

@@ -29,7 +29,7 @@ typename D::Real bearing(const exploration::DeltaT<D>& d, const typename D::Real
   return num::atan2(f.dy, f.dx);
 }
 
-Outcome run(Session& session, bool fix) {
+Outcome run_atan2(Session& session, bool fix) {
   z3::context& c = session.ctx();
   const exploration::RobotParams rp;
   Translator t(c, RealTheory::real);
@@ -89,12 +89,12 @@ std::vector<Obligation> atan2_obligations() {
                  "In maneuver 1, at two positions closer than the tolerance in one deadband strip "
                  "around the waypoint, the fixed bearing atan2(dy', dx') differs by less than pi "
                  "(it never flips across the +-pi cut, so beta cannot flip sign).",
-                 Verdict::proved, assumptions, [](Session& s) { return run(s, true); },
+                 Verdict::proved, assumptions, [](Session& s) { return run_atan2(s, true); },
                  {"exploration::atan2_fix_rule"}},
       Obligation{"atan2-without-fix",
                  "The same property for the raw deltas (no fix): refuted, the bearing flips from "
                  "about +pi to -pi when the waypoint is behind the robot on its axis.",
-                 Verdict::refuted, assumptions, [](Session& s) { return run(s, false); },
+                 Verdict::refuted, assumptions, [](Session& s) { return run_atan2(s, false); },
                  {}},
   };
 }

@@ -177,7 +177,7 @@ class CounterEncoding : public TransitionSystem {
   std::vector<StepTerms> steps_;
 };
 
-Outcome run(Session& session) {
+Outcome run_counter(Session& session) {
   MoveTable moves;
   if (!enumerate_moves(session, moves))
     return {Verdict::unknown, "z3 gave up enumerating the controller's local steps", {}};
@@ -214,7 +214,7 @@ std::vector<Obligation> handshake_counter_obligations() {
        "controller has a lowered output (the Jacobi master reads last step's outputs)",
        "k-induction with the counting form of the hand-derived lemma; a counterexample of the abstraction is "
        "reported unknown (handshake-safety gives concrete traces)"},
-      run,
+      run_counter,
       {"exploration::controller_rule", "exploration::environment_handshake_rule", "exploration::all_arrived_rule",
        "exploration::arrived_rule", "exploration::atan2_fix_rule", "exploration::bearing_error_rule"}}};
 }

@@ -145,7 +145,7 @@ Outcome refuted(const std::string& name, const Variant& v, Encoding& enc, const 
           TraceFile{name + ".jsonl", write_handshake_trace(t)}};
 }
 
-Outcome run(Session& session, const std::string& name, Variant v, bool strengthen) {
+Outcome run_handshake(Session& session, const std::string& name, Variant v, bool strengthen) {
   std::string ks;
   for (int n = 1; n <= kMaxRobots; ++n) {
     if (strengthen && n <= kBmcRobots) {   // a real run that breaks the property, if any
@@ -199,7 +199,7 @@ Obligation make(std::string name, std::string property, Verdict expected, Varian
                                      "exploration::arrived_rule"};
   std::string n = name;
   return Obligation{std::move(name), std::move(property), expected, std::move(a),
-                    [n, v, strengthen](Session& s) { return run(s, n, v, strengthen); }, std::move(reads)};
+                    [n, v, strengthen](Session& s) { return run_handshake(s, n, v, strengthen); }, std::move(reads)};
 }
 
 }  // namespace

@@ -141,7 +141,7 @@ z3::check_result check_move(Session& session, int s_range) {
   return session.check(s, fmt::format("move-s{}", s_range));
 }
 
-Outcome run(Session& session) {
+Outcome run_occupancy(Session& session) {
   for (int s_range = 1; s_range <= kMaxRange; ++s_range)
     for (exploration::RuleSet set : kRuleSets) {
       const Check r = check_choice(session, set, s_range);
@@ -184,7 +184,7 @@ std::vector<Obligation> occupancy_obligations() {
        "s_range 1..3",
        "a counterexample counts only when the executed choose() reproduces it (stochastic rules: with "
        "one of the seeds 0..999)"},
-      run,
+      run_occupancy,
       {"exploration::choose_rule", "exploration::pheromone_key_rule"}}};
 }
 

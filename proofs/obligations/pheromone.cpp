@@ -119,7 +119,7 @@ Check check(Session& session, Query q, int robots) {
                                 : "NOT reproduced by the executed code: a spurious counterexample")};
 }
 
-Outcome run(Session& session) {
+Outcome run_pheromone(Session& session) {
   for (int robots = 1; robots <= kMaxRobots; ++robots)
     for (Query q : {Query::init, Query::step_decay, Query::step_thesis}) {
       const Check c = check(session, q, robots);
@@ -154,7 +154,7 @@ std::vector<Obligation> pheromone_obligations() {
        "are free reals >= 0",
        "R = 1..8 robots, each depositing at most once per planning step; parameters free in their "
        "SPEC.md domains with ertu dt > 0"},
-      run,
+      run_pheromone,
       {"exploration::evaporation_factor_rule", "exploration::thesis_evaporate_rule",
        "exploration::deposit_amount_rule"}}};
 }

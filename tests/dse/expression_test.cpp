@@ -35,7 +35,7 @@ bool eval(const std::string& text) {
   return parse(text).evaluate([](const std::string& n) { return names().at(n); });
 }
 
-std::string error_of(const std::string& text) {
+std::string expression_error_of(const std::string& text) {
   try {
     parse(text);
   } catch (const InputError& e) {
@@ -67,20 +67,20 @@ TEST(Expression, IntoCpsNamesTextAndFunctions) {
 }
 
 TEST(Expression, ErrorsNameTheColumnAndShowACaret) {
-  EXPECT_EQ(error_of("a1 < )"),
+  EXPECT_EQ(expression_error_of("a1 < )"),
             "c.json: parameterConstraints[0], column 6: expected a number, a name or '(', got ')'\n    a1 < )\n         ^");
-  EXPECT_NE(error_of("a1 + ").find("column 6: expected a number, a name or '(', got 'end of text'"), std::string::npos);
-  EXPECT_NE(error_of("a1 < a2 < 3").find("column 9: chained comparisons are not supported"), std::string::npos);
-  EXPECT_NE(error_of("foo > 1").find("column 1: unknown name 'foo' (known: a1, a2, rule)"), std::string::npos);
-  EXPECT_NE(error_of("a1 and a2").find("column 4: 'and' needs a boolean, got a number"), std::string::npos);
-  EXPECT_NE(error_of("rule < 'x'").find("column 6: '<' needs a number, got text"), std::string::npos);
-  EXPECT_NE(error_of("rule == 1").find("'==' compares text with a number"), std::string::npos);
-  EXPECT_NE(error_of("a1 + 2").find("column 1: expected a boolean expression"), std::string::npos);
-  EXPECT_NE(error_of("rule == 'thesis").find("column 9: text starting here has no closing quote"), std::string::npos);
-  EXPECT_NE(error_of("a1 # 2").find("column 4: unexpected character '#'"), std::string::npos);
-  EXPECT_NE(error_of("(a1 > 1").find("expected ')' to close the '(' at column 1"), std::string::npos);
-  EXPECT_NE(error_of("abs(a1, a2) > 0").find("abs() takes exactly one argument"), std::string::npos);
-  EXPECT_NE(error_of("a1 > 0 a2").find("column 8: expected an operator or the end, got 'a2'"), std::string::npos);
+  EXPECT_NE(expression_error_of("a1 + ").find("column 6: expected a number, a name or '(', got 'end of text'"), std::string::npos);
+  EXPECT_NE(expression_error_of("a1 < a2 < 3").find("column 9: chained comparisons are not supported"), std::string::npos);
+  EXPECT_NE(expression_error_of("foo > 1").find("column 1: unknown name 'foo' (known: a1, a2, rule)"), std::string::npos);
+  EXPECT_NE(expression_error_of("a1 and a2").find("column 4: 'and' needs a boolean, got a number"), std::string::npos);
+  EXPECT_NE(expression_error_of("rule < 'x'").find("column 6: '<' needs a number, got text"), std::string::npos);
+  EXPECT_NE(expression_error_of("rule == 1").find("'==' compares text with a number"), std::string::npos);
+  EXPECT_NE(expression_error_of("a1 + 2").find("column 1: expected a boolean expression"), std::string::npos);
+  EXPECT_NE(expression_error_of("rule == 'thesis").find("column 9: text starting here has no closing quote"), std::string::npos);
+  EXPECT_NE(expression_error_of("a1 # 2").find("column 4: unexpected character '#'"), std::string::npos);
+  EXPECT_NE(expression_error_of("(a1 > 1").find("expected ')' to close the '(' at column 1"), std::string::npos);
+  EXPECT_NE(expression_error_of("abs(a1, a2) > 0").find("abs() takes exactly one argument"), std::string::npos);
+  EXPECT_NE(expression_error_of("a1 > 0 a2").find("column 8: expected an operator or the end, got 'a2'"), std::string::npos);
 }
 
 RC_GTEST_PROP(Expression, ComparisonOfPrintedNumbersEvaluatesAsInCpp, (double a, double b, int op)) {

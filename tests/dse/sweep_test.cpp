@@ -40,7 +40,7 @@ Swept sweep(const DesignSpace& space, int32_t threads, const fs::path& dir) {
 
 const std::string kSource = SWARMCHECK_SOURCE_DIR;
 
-DseConfig config(const std::string& algorithm, const std::string& parameters, const std::string& extra = "") {
+DseConfig sweep_config(const std::string& algorithm, const std::string& parameters, const std::string& extra = "") {
   return parse_dse_config(R"({"algorithm": )" + algorithm + R"(, "parameters": )" + parameters + extra +
                               R"(, "objectiveDefinitions": {"internalFunctions": {
                                    "e": {"columnID": "eP", "objectiveType": "mean"},
@@ -78,7 +78,7 @@ TEST(ThesisDse, EveryPointGivesTheEpAndSTimeOfTheThesisEnvironmentCode) {
 }
 
 TEST(Sweep, ResultsAreIdenticalOnOneThreadAndOnSeveral) {
-  const DseConfig c = config(R"({"type": "exhaustive"})",
+  const DseConfig c = sweep_config(R"({"type": "exhaustive"})",
                              R"({"ertu": [0.05, 0.2], "rule": ["deterministic", "stochastic"], "nRobots": [3, 6], "replicates": [3]})");
   exploration::Scenario base = exploration::default_scenario();
   base.mode = exploration::Mode::abstract;
@@ -93,7 +93,7 @@ TEST(Sweep, ResultsAreIdenticalOnOneThreadAndOnSeveral) {
 }
 
 TEST(Sweep, ASecondRunReadsEveryPointFromTheJournalAndWritesTheSameResults) {
-  const DseConfig c = config(R"({"type": "exhaustive"})", R"({"ertu": [0.05, 0.1, 0.2], "rule": ["stochastic"]})");
+  const DseConfig c = sweep_config(R"({"type": "exhaustive"})", R"({"ertu": [0.05, 0.1, 0.2], "rule": ["stochastic"]})");
   exploration::Scenario base = exploration::default_scenario();
   base.mode = exploration::Mode::abstract;
   const DesignSpace space(c, base);
@@ -133,7 +133,7 @@ TEST(Journal, ATornLastLineIsSkippedAndTheNextLineStartsClean) {
 }
 
 TEST(Genetic, SeededSearchVisitsDistinctFeasiblePointsAndRepeatsOnOtherThreadCounts) {
-  const DseConfig c = config(R"({"type": "genetic", "initialPopulation": 4, "mutationProbability": 30,
+  const DseConfig c = sweep_config(R"({"type": "genetic", "initialPopulation": 4, "mutationProbability": 30,
                                  "maxGenerationsWithoutImprovement": 2, "maxGenerations": 6, "seed": 3})",
                              R"({"ertu": [0.02, 0.05, 0.1, 0.2, 0.4], "a1": [0.25, 0.5, 1], "rule": ["deterministic", "stochastic"]})",
                              R"~(, "parameterConstraints": ["not (a1 == 1 and ertu == 0.4)"])~");
