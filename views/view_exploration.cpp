@@ -145,8 +145,7 @@ void add_counterexample(Json& data, const Trace& t) {
   ExplorationOptions options;
   if (t.header.contains("impl_options") && t.header["impl_options"].is_object() &&
       t.header["impl_options"].value("grouped", json_io::Json(false)) == json_io::Json(true)) {
-    options.parallel_min_robots = 1;
-    options.parallel_min_bodies = 1;
+    options = conformance::exploration::grouped_options();
   }
   const int64_t step = t.records.back().step;
   Json sides = Json::object();

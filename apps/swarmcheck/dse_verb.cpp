@@ -285,7 +285,7 @@ void add_dse_verb(CLI::App& app, int& exit_code) {
   cmd->add_option("--scenario", a->scenario_path, "The base scenario the parameters change (default: the built-in one)");
   cmd->add_option("-o,--out", a->out_dir, "Folder for results.csv, results.json, report.html, report.svg, journal.jsonl")
       ->capture_default_str();
-  cmd->add_option("--threads", a->threads, "Design points in parallel (0: every core)")->capture_default_str();
+  add_threads_option(cmd, a->threads, "Design points in parallel");
   cmd->add_flag("--json", a->json, "Print the results object (results.json) instead of the summary");
   cmd->callback([a, &exit_code] {
     exit_code = guarded([&] { return dse(*a); });

@@ -37,6 +37,7 @@ struct RunOptions {
   std::string engine = "impl";
   bool json = false;
   int64_t stall_window = 100000;   // master steps without a newly visited cell; 0: never stop
+  int32_t threads = 0;             // 0: every core
   Budgets budgets;
 };
 
@@ -197,7 +198,9 @@ int run(const RunOptions& o) {
   if (end.reach.unreachable_free_cells > 0)
     fmt::print(stderr, "swarmcheck run: warning: {} of {} free cells cannot be reached by any robot (walled in); "
                "eP cannot reach 100 %\n", end.reach.unreachable_free_cells, free_cell_count(s));
-  const auto sim = cx::make_simulation(engine, s);
+  swarmcheck::exploration::ExplorationOptions options;
+  options.threads = o.threads;
+  const auto sim = cx::make_simulation(engine, s, options);
   return run_with(*sim, s, o, end);
 }
 
@@ -227,6 +230,7 @@ void add_run_verb(CLI::App& app, int& exit_code) {
                   "Stop as stalled after this many steps without a newly visited cell (0: never)")
       ->capture_default_str();
   add_budget_options(cmd, opts->budgets, true);
+  add_threads_option(cmd, opts->threads, "Threads for the impl's planning, deposits and robots");
   cmd->add_option("--engine", opts->engine, "impl (the optimised library) | model (the reference)")
       ->check(CLI::IsMember({"impl", "model"}))
       ->capture_default_str();

@@ -45,6 +45,15 @@ inline std::string printable_message(const std::string& text) {
   return out;
 }
 
+// --threads N (0: every core), defaulting to the SWARMCHECK_THREADS environment variable. The
+// results never depend on it; only the time does.
+inline CLI::Option* add_threads_option(CLI::App* cmd, int32_t& threads, const std::string& what) {
+  return cmd->add_option("--threads", threads, what + " (0: every core)")
+      ->envname("SWARMCHECK_THREADS")
+      ->check(CLI::Range(0, 1 << 16))
+      ->capture_default_str();
+}
+
 // Runs a verb body. Bad input (InputError) prints one line and gives exit status 2; any other
 // exception is a bug in swarmcheck: it is reported as such with status 3, never a crash.
 inline int guarded(const std::function<int()>& body) {

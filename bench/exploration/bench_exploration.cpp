@@ -2,8 +2,11 @@
 //
 // Each benchmark iteration is one master step of an already built simulation (construction is
 // not timed). abstract: every step is a planning step (robot decisions/s); cosim: Environment +
-// controllers + bodies at dt = 0.1 s (x_realtime = simulated seconds per wall second). Both
-// engines run on one thread. At the end a table gives model time / impl time per size.
+// controllers + bodies at dt = 0.1 s (x_realtime = simulated seconds per wall second). The model
+// runs on one thread; the impl twice: on one thread (impl1) and with the options `swarmcheck run`
+// uses by default (impl: every core). At the end a table gives, per size, both impl times, the
+// model's, model / impl (as the CLI runs it, and on one thread) and the speed-up from threads.
+// load/r1000000/n1024 times reading, validating and building a 10^6-robot scenario.
 #include <benchmark/benchmark.h>
 
 #include <cstdio>
@@ -46,8 +49,7 @@ Scenario bench_scenario(Mode mode, int32_t robots, int32_t map_size) {
 
 ExplorationOptions one_thread() {
   ExplorationOptions o;
-  o.parallel_min_robots = 1 << 30;
-  o.parallel_min_bodies = 1 << 30;
+  o.threads = 1;
   return o;
 }
 
@@ -62,10 +64,28 @@ void run_steps(benchmark::State& state, Sim& sim, const Scenario& s) {
   state.counters["x_realtime"] = benchmark::Counter(steps * s.params.step_size, benchmark::Counter::kIsRate);
 }
 
-void bench_impl(benchmark::State& state, Mode mode, int32_t robots, int32_t map) {
+void bench_impl1(benchmark::State& state, Mode mode, int32_t robots, int32_t map) {
   const Scenario s = bench_scenario(mode, robots, map);
   Exploration x(s, one_thread());
   run_steps(state, x, s);
+}
+
+// As `swarmcheck run` runs it: default options (every core).
+void bench_impl(benchmark::State& state, Mode mode, int32_t robots, int32_t map) {
+  const Scenario s = bench_scenario(mode, robots, map);
+  Exploration x(s, ExplorationOptions{});
+  run_steps(state, x, s);
+}
+
+// The scenario as a file's text, then what `swarmcheck run FILE` does before its first step.
+void bench_load(benchmark::State& state, int32_t robots, int32_t map) {
+  const std::string text = json_io::to_json(bench_scenario(Mode::abstract, robots, map)).dump();
+  for (auto _ : state) {
+    const Scenario s = parse_scenario(text, "bench.json");
+    Exploration x(s, ExplorationOptions{});
+    benchmark::DoNotOptimize(x.visited());
+  }
+  state.counters["bytes"] = static_cast<double>(text.size());
 }
 
 void bench_model(benchmark::State& state, Mode mode, int32_t robots, int32_t map) {
@@ -83,23 +103,29 @@ class RatioReporter : public benchmark::ConsoleReporter {
       const std::string name = r.run_name.function_name;
       const auto slash = name.find('/');
       const std::string engine = name.substr(0, slash), size = name.substr(slash + 1);
-      (engine == "impl" ? impl_ : model_)[size] = r.GetAdjustedRealTime();   // microseconds
+      if (engine == "load") continue;
+      (engine == "impl" ? impl_ : engine == "impl1" ? impl1_ : model_)[size] = r.GetAdjustedRealTime();   // us
     }
   }
   void Finalize() override {
     ConsoleReporter::Finalize();
-    std::printf("\n%-32s %14s %14s %10s\n", "mode/robots/map", "impl us/step", "model us/step", "ratio");
+    std::printf("\n%-26s %12s %12s %14s %10s %10s %9s\n", "mode/robots/map", "impl us/step", "impl1 us/step",
+                "model us/step", "model/impl", "model/impl1", "threads");
     for (const auto& [size, impl_us] : impl_) {
+      const auto one = impl1_.find(size);
+      const double impl1_us = one == impl1_.end() ? 0.0 : one->second;
       const auto m = model_.find(size);
       if (m == model_.end())
-        std::printf("%-32s %14.2f %14s %10s\n", size.c_str(), impl_us, "-", "-");
+        std::printf("%-26s %12.2f %12.2f %14s %10s %10s %8.2fx\n", size.c_str(), impl_us, impl1_us, "-", "-", "-",
+                    impl1_us / impl_us);
       else
-        std::printf("%-32s %14.2f %14.2f %9.1fx\n", size.c_str(), impl_us, m->second, m->second / impl_us);
+        std::printf("%-26s %12.2f %12.2f %14.2f %9.1fx %9.1fx %8.2fx\n", size.c_str(), impl_us, impl1_us, m->second,
+                    m->second / impl_us, m->second / impl1_us, impl1_us / impl_us);
     }
   }
 
  private:
-  std::map<std::string, double> impl_, model_;
+  std::map<std::string, double> impl_, impl1_, model_;
 };
 
 void register_all() {
@@ -113,12 +139,20 @@ void register_all() {
                                  std::to_string(robots) + "/n" + std::to_string(map);
         benchmark::RegisterBenchmark(("impl/" + size).c_str(), bench_impl, mode, robots, map)
             ->Unit(benchmark::kMicrosecond)->MinTime(0.2);
+        benchmark::RegisterBenchmark(("impl1/" + size).c_str(), bench_impl1, mode, robots, map)
+            ->Unit(benchmark::kMicrosecond)->MinTime(0.2);
         // The model's step is O(cells): run it where a step takes well under a second.
         const bool model_fits = int64_t{map} * map <= (mode == Mode::abstract ? 4096 * 4096 : 1024 * 1024);
         if (model_fits)
           benchmark::RegisterBenchmark(("model/" + size).c_str(), bench_model, mode, robots, map)
               ->Unit(benchmark::kMicrosecond)->MinTime(0.2);
       }
+  // 10^6 robots on 1024^2: loading, and steps as the CLI runs them and on one thread.
+  benchmark::RegisterBenchmark("load/r1000000/n1024", bench_load, 1'000'000, 1024)->Unit(benchmark::kMillisecond)->Iterations(3);
+  benchmark::RegisterBenchmark("impl/abstract/r1000000/n1024", bench_impl, Mode::abstract, 1'000'000, 1024)
+      ->Unit(benchmark::kMicrosecond)->MinTime(1.0);
+  benchmark::RegisterBenchmark("impl1/abstract/r1000000/n1024", bench_impl1, Mode::abstract, 1'000'000, 1024)
+      ->Unit(benchmark::kMicrosecond)->MinTime(1.0);
 }
 
 }  // namespace

@@ -59,4 +59,12 @@ std::unique_ptr<Simulation> make_simulation(Engine engine, const Scenario& s, co
   return std::make_unique<ImplSimulation>(s, options);
 }
 
+swarmcheck::exploration::ExplorationOptions grouped_options() {
+  swarmcheck::exploration::ExplorationOptions o;
+  o.threads = 4;
+  o.parallel_min_robots = 1;
+  o.parallel_min_bodies = 1;
+  return o;
+}
+
 }  // namespace swarmcheck::conformance::exploration

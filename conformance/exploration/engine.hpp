@@ -34,6 +34,10 @@ class Simulation {
 // About how many bytes the engine's run of `s` allocates (the memory budget's estimate).
 std::uint64_t estimated_bytes(Engine engine, const swarmcheck::exploration::Scenario& s);
 
+// The impl options of a "grouped" case: planning, deposits and bodies in parallel from the first
+// robot, on more threads than this machine may have cores (the schedule must not depend on them).
+swarmcheck::exploration::ExplorationOptions grouped_options();
+
 // `s` must be valid; `options` only matter to the impl.
 std::unique_ptr<Simulation> make_simulation(Engine engine, const swarmcheck::exploration::Scenario& s,
                                             const swarmcheck::exploration::ExplorationOptions& options = {});

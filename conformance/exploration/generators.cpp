@@ -166,12 +166,7 @@ rc::Gen<ExplorationCase> gen_exploration_case(int64_t max_steps) {
 }
 
 ExplorationOptions impl_options(const ExplorationCase& c) {
-  ExplorationOptions o;
-  if (c.grouped) {
-    o.parallel_min_robots = 1;
-    o.parallel_min_bodies = 1;
-  }
-  return o;
+  return c.grouped ? grouped_options() : ExplorationOptions{};
 }
 
 }  // namespace swarmcheck::conformance::exploration

@@ -79,8 +79,7 @@ TraceHeader read_header(const Json& h, const std::string& where) {
   if (h.contains("impl_options") && !h["impl_options"].is_object())
     throw InputError(where, "header: impl_options: expected an object");
   if (typed_member<bool>(h.value("impl_options", Json::object()), "grouped", false, where, "true or false")) {
-    t.options.parallel_min_robots = 1;
-    t.options.parallel_min_bodies = 1;
+    t.options = grouped_options();
   }
   if (h.contains("divergence") && !h["divergence"].is_object())
     throw InputError(where, "header: divergence: expected an object");

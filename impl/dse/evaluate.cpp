@@ -146,8 +146,7 @@ class Recorder {
 RunOutputs run_scenario(const Scenario& s, const std::vector<Column>& columns) {
   // One thread per run: the DSE runs points in parallel instead.
   ExplorationOptions one_thread;
-  one_thread.parallel_min_robots = std::numeric_limits<int32_t>::max();
-  one_thread.parallel_min_bodies = std::numeric_limits<int32_t>::max();
+  one_thread.threads = 1;
   Exploration run(s, one_thread);
   Recorder rec(s, columns, run);
   rec.record();   // step 0, the initial state

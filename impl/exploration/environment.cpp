@@ -1,6 +1,9 @@
 #include "impl/exploration/environment.hpp"
 
 #include <algorithm>
+#include <thread>
+
+#include <tbb/info.h>
 
 namespace swarmcheck::impl::exploration {
 
@@ -9,6 +12,15 @@ namespace spec = swarmcheck::exploration;
 namespace {
 constexpr std::size_t kPrefetchAhead = 4;   // robots
 constexpr int32_t kPrefetchRangeMax = 2;    // s_range up to which windows are prefetched
+// Below this many window cells in a stage (robots x (2 s + 1)^2), cutting strips and handing them
+// to threads costs more than it saves (bench_exploration, threads 1 against all).
+constexpr int64_t kParallelMinWindowCells = int64_t{1} << 15;
+constexpr int32_t kStripsPerThread = 4;     // spare strips, so a thread with a light one takes another
+
+int32_t threads_of(const swarmcheck::exploration::ExplorationOptions& o) {
+  if (o.threads > 0) return o.threads;
+  return static_cast<int32_t>(std::max(1u, std::thread::hardware_concurrency()));
+}
 
 // The stages the spec's environment_step calls, bound to this Environment.
 struct Stages {
@@ -26,7 +38,11 @@ Environment::Environment(const spec::Scenario& s, const ExplorationOptions& opti
     : cfg_(spec::make_environment_config(s)),
       options_(options),
       grid_(cfg_),
-      env_(spec::initial_environment(cfg_, grid_)) {}
+      threads_(threads_of(options)),
+      // More threads than cores would only be refused by TBB (with a warning): the strips still
+      // follow threads_, the arena the machine.
+      arena_(std::min(threads_, tbb::info::default_concurrency())),
+      env_(spec::initial_environment(cfg_, grid_, Stages{this})) {}
 
 spec::Cell Environment::cell(CellIndex c) const {
   SWARM_DEMAND(spec::in_map(c, cfg_.scenario.map_size));
@@ -35,8 +51,31 @@ spec::Cell Environment::cell(CellIndex c) const {
 
 void Environment::step(bool all_arrived) { spec::environment_step(cfg_, env_, grid_, all_arrived, Stages{this}); }
 
+int32_t Environment::strips_for(std::size_t robots) const {
+  if (threads_ <= 1 || robots < 2) return 1;
+  const int64_t n = static_cast<int64_t>(robots);
+  if (options_.parallel_min_robots > 0) {
+    if (n < options_.parallel_min_robots) return 1;
+  } else {
+    const int64_t side = 2 * int64_t{cfg_.scenario.params.s_range} + 1;
+    if (n * side * side < kParallelMinWindowCells) return 1;
+  }
+  return threads_ * kStripsPerThread;
+}
+
+// A robot's decision touches only its window (s_range rows either side of its row), and its
+// deposit only the window around its deposit centre: robots whose rows (centres' rows) are more
+// than 2 s_range apart never touch the same cell.
 int64_t Environment::plan(spec::EnvironmentState& env, LazyGrid& grid) const {
-  if (static_cast<int64_t>(env.robots.size()) >= options_.parallel_min_robots) return plan_grouped(env, grid);
+  const int32_t strips = strips_for(env.robots.size());
+  if (strips > 1) {
+    rows_.resize(env.robots.size());
+    for (std::size_t r = 0; r < rows_.size(); ++r) rows_[r] = env.robots[r].cell[0];
+    if (strips_.build(rows_, cfg_.scenario.map_size, 2 * cfg_.scenario.params.s_range, strips) > 1)
+      return strips_.run(arena_, strip_scratch_, [&](int32_t r, std::vector<Candidate>& w) {
+        return spec::plan_robot(cfg_, env, grid, r, w);
+      });
+  }
   return plan_sequential(env, grid);
 }
 
@@ -59,6 +98,18 @@ int64_t Environment::plan_sequential(spec::EnvironmentState& env, LazyGrid& grid
 
 void Environment::deposit(const spec::EnvironmentState& env, LazyGrid& grid) const {
   const std::size_t n = env.deposit_centre.size();
+  const int32_t strips = strips_for(n);
+  if (strips > 1) {
+    rows_.resize(n);
+    for (std::size_t r = 0; r < n; ++r) rows_[r] = env.deposit_centre[r][0];
+    if (strips_.build(rows_, cfg_.scenario.map_size, 2 * cfg_.scenario.params.s_range, strips) > 1) {
+      strips_.run(arena_, no_scratch_, [&](int32_t r, char&) {
+        spec::deposit_around(cfg_, grid, env.deposit_centre[static_cast<std::size_t>(r)], env.tick);
+        return int64_t{0};
+      });
+      return;
+    }
+  }
   for (std::size_t r = 0; r < n; ++r) {
     if (r + kPrefetchAhead < n) prefetch(env.deposit_centre[r + kPrefetchAhead]);
     spec::deposit_around(cfg_, grid, env.deposit_centre[r], env.tick);

@@ -1,12 +1,16 @@
 #pragma once
 // The optimised Environment: the spec's Environment step (spec/exploration/environment_step.hpp)
 // on a lazy grid, with stages that give the spec's index-order result faster: windows prefetched
-// a few robots ahead, and for many robots, decisions in parallel by independent groups.
+// a few robots ahead, and for enough work, decisions and deposits in parallel over strips of the
+// map (strip_schedule.hpp) with exactly the index-order result.
+#include <tbb/task_arena.h>
+
 #include <cstdint>
 #include <optional>
 #include <vector>
 
 #include "impl/exploration/lazy_grid.hpp"
+#include "impl/exploration/strip_schedule.hpp"
 #include "spec/exploration/environment_step.hpp"
 #include "swarmcheck/exploration.hpp"
 
@@ -30,16 +34,29 @@ class Environment {
   int64_t plan(swarmcheck::exploration::EnvironmentState& env, LazyGrid& grid) const;
   void deposit(const swarmcheck::exploration::EnvironmentState& env, LazyGrid& grid) const;
 
+  // The threads this Environment (and the master's robots) may use, and where they run.
+  int32_t threads() const { return threads_; }
+  tbb::task_arena& arena() const { return arena_; }
+
  private:
   int64_t plan_sequential(swarmcheck::exploration::EnvironmentState& env, LazyGrid& grid) const;
-  int64_t plan_grouped(swarmcheck::exploration::EnvironmentState& env, LazyGrid& grid) const;
+  // How many strips a stage over `robots` robots is worth cutting (1: do it on this thread).
+  int32_t strips_for(std::size_t robots) const;
   void prefetch(CellIndex c) const;
 
   swarmcheck::exploration::EnvironmentConfig cfg_;
   ExplorationOptions options_;
   LazyGrid grid_;
-  swarmcheck::exploration::EnvironmentState env_;
   mutable std::vector<Candidate> scratch_;   // the sequential stage's candidates, reused
+  int32_t threads_;
+  mutable tbb::task_arena arena_;
+  // The parallel stages' schedules and per-strip candidates, reused from step to step.
+  mutable StripSchedule strips_;
+  mutable std::vector<int32_t> rows_;
+  mutable std::vector<std::vector<Candidate>> strip_scratch_;
+  mutable std::vector<char> no_scratch_;
+  // Last: its initialisation runs the deposit stage, which uses the members above.
+  swarmcheck::exploration::EnvironmentState env_;
 };
 
 }  // namespace swarmcheck::impl::exploration

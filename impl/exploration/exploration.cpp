@@ -58,8 +58,10 @@ void Exploration::State::step_robot(std::size_t r, int32_t env_output, const Poi
 void Exploration::State::robots_step(int32_t env_output) {
   const std::size_t n = body.size();
   const auto& robots = env.state().robots;   // still the previous step's waypoints
-  if (static_cast<int64_t>(n) >= options.parallel_min_bodies) {
-    tbb::parallel_for(std::size_t{0}, n, [&](std::size_t r) { step_robot(r, env_output, robots[r].waypoint); });
+  if (env.threads() > 1 && static_cast<int64_t>(n) >= options.parallel_min_bodies) {
+    env.arena().execute([&] {
+      tbb::parallel_for(std::size_t{0}, n, [&](std::size_t r) { step_robot(r, env_output, robots[r].waypoint); });
+    });
   } else {
     for (std::size_t r = 0; r < n; ++r) step_robot(r, env_output, robots[r].waypoint);
   }

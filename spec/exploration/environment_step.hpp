@@ -152,21 +152,26 @@ struct IndexOrder {
 };
 
 // Initialisation (thesis setEnvironment): robots in index order deposit around their start cell
-// and mark it occupied and visited; then obstacles are set.
-template <EnvironmentGrid G>
-EnvironmentState initial_environment(const EnvironmentConfig& cfg, G& grid) {
+// and mark it occupied and visited; then obstacles are set. The deposits touch only pheromone and
+// the marks only occupancy, so all deposits go first, as a planning step's deposit stage around
+// the start cells (Stages::deposit: index order, or anything with the same result).
+template <EnvironmentGrid G, class Stages = IndexOrder>
+EnvironmentState initial_environment(const EnvironmentConfig& cfg, G& grid, const Stages& stages = Stages{}) {
   const Scenario& s = cfg.scenario;
   EnvironmentState env;
   env.handshake = initial_handshake();
-  for (std::size_t r = 0; r < s.robots.size(); ++r) {
-    const CellIndex c = cell_of(s.robots[r], s.cell_size);
-    env.robots.push_back(EnvRobot{c, s.robots[r]});
-    deposit_around(cfg, grid, c, 0);
-    grid.occupy(c, static_cast<int32_t>(r));
-    env.progress.visited += grid.mark_visited(c) ? 1 : 0;
+  env.robots.reserve(s.robots.size());
+  env.deposit_centre.reserve(s.robots.size());
+  for (const Point_m& p : s.robots) {
+    env.robots.push_back(EnvRobot{cell_of(p, s.cell_size), p});
+    env.deposit_centre.push_back(env.robots.back().cell);
+  }
+  stages.deposit(cfg, env, grid);   // at tick 0
+  for (std::size_t r = 0; r < env.robots.size(); ++r) {
+    grid.occupy(env.robots[r].cell, static_cast<int32_t>(r));
+    env.progress.visited += grid.mark_visited(env.robots[r].cell) ? 1 : 0;
   }
   for (const CellIndex& c : s.obstacles) grid.set_obstacle(c);
-  env.deposit_centre.resize(env.robots.size());
   env.progress.free_cells = free_cell_count(s);
   update_progress(env.progress, 0, s.params.step_size);
   return env;

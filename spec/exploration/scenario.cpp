@@ -1,6 +1,7 @@
 #include "spec/exploration/scenario.hpp"
 
 #include <charconv>
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <map>
@@ -73,39 +74,90 @@ std::string cell_text(CellIndex c) {
   return "[" + std::to_string(c[0]) + ", " + std::to_string(c[1]) + "]";
 }
 
+// A cell and an index packed in one integer, cell in the high half (maps have at most 2^32 cells,
+// lists at most 2^32 entries): sorting them sorts by cell, then index.
+uint64_t packed(CellIndex c, int32_t map_size, std::size_t k) {
+  return ((static_cast<uint64_t>(c[0]) * static_cast<uint64_t>(map_size) + static_cast<uint64_t>(c[1])) << 32) |
+         static_cast<uint64_t>(k);
+}
+std::size_t index_of(uint64_t p) { return static_cast<std::size_t>(p & 0xffffffffU); }
+uint64_t cell_of_packed(uint64_t p) { return p >> 32; }
+
+// The smallest index that repeats an earlier index's cell (n if none), and that earlier index;
+// `sorted` is packed cells, sorted.
+std::pair<std::size_t, std::size_t> first_repeat(const std::vector<uint64_t>& sorted, std::size_t n) {
+  std::pair<std::size_t, std::size_t> best{n, n};
+  for (std::size_t k = 1; k < sorted.size(); ++k)
+    if (cell_of_packed(sorted[k]) == cell_of_packed(sorted[k - 1]) && index_of(sorted[k]) < best.first)
+      best = {index_of(sorted[k]), index_of(sorted[k - 1])};
+  return best;
+}
+
+// Linear-logarithmic in the cells (a scenario of 10^6 robots validates in well under a second):
+// every check is made for all entries, and the error reported is the one a pass in index order
+// would meet first.
 void validate_cells(const Scenario& s) {
-  std::map<CellIndex, std::size_t> obstacle_at;
-  for (std::size_t k = 0; k < s.obstacles.size(); ++k) {
-    const CellIndex c = s.obstacles[k];
-    const std::string path = "obstacles[" + std::to_string(k) + "]";
-    if (!in_map(c, s.map_size))
-      throw InputError(path, "expected a cell [i, j] with 0 <= i, j < " +
-                                 std::to_string(s.map_size) + ", got " + cell_text(c));
-    if (auto [it, fresh] = obstacle_at.emplace(c, k); !fresh)
-      throw InputError(path, "cell " + cell_text(c) + " repeats obstacles[" +
-                                 std::to_string(it->second) + "]");
+  const std::size_t n_obstacles = s.obstacles.size();
+  std::size_t bad_obstacle = n_obstacles;
+  std::vector<uint64_t> obstacle_cells;
+  obstacle_cells.reserve(n_obstacles);
+  for (std::size_t k = 0; k < n_obstacles; ++k) {
+    if (!in_map(s.obstacles[k], s.map_size)) {
+      bad_obstacle = k;
+      break;
+    }
+    obstacle_cells.push_back(packed(s.obstacles[k], s.map_size, k));
   }
+  std::sort(obstacle_cells.begin(), obstacle_cells.end());
+  const auto [repeat, repeated] = first_repeat(obstacle_cells, n_obstacles);
+  if (repeat < bad_obstacle)
+    throw InputError("obstacles[" + std::to_string(repeat) + "]", "cell " + cell_text(s.obstacles[repeat]) +
+                                                                      " repeats obstacles[" + std::to_string(repeated) + "]");
+  if (bad_obstacle < n_obstacles)
+    throw InputError("obstacles[" + std::to_string(bad_obstacle) + "]",
+                     "expected a cell [i, j] with 0 <= i, j < " + std::to_string(s.map_size) + ", got " +
+                         cell_text(s.obstacles[bad_obstacle]));
   if (s.robots.empty()) throw InputError("robots", "expected at least one robot");
   if (static_cast<int64_t>(s.robots.size()) > kRobotsMax)
     throw InputError("robots", "expected at most 2^30 robots, got " + std::to_string(s.robots.size()));
   const double side_m = s.map_size * s.cell_size;
-  std::map<CellIndex, std::size_t> robot_at;
-  for (std::size_t k = 0; k < s.robots.size(); ++k) {
+  const std::size_t n = s.robots.size();
+  // Robot k fails on its position, else on an obstacle's cell, else on an earlier robot's cell.
+  std::size_t bad_position = n, on_obstacle = n;
+  std::vector<uint64_t> robot_cells;
+  robot_cells.reserve(n);
+  // The first obstacle entry of a cell at or after the cell's packed key with index 0.
+  const auto obstacle_entry = [&](CellIndex c) {
+    return std::lower_bound(obstacle_cells.begin(), obstacle_cells.end(), packed(c, s.map_size, 0));
+  };
+  for (std::size_t k = 0; k < n; ++k) {
     const Point_m p = s.robots[k];
-    const std::string path = "robots[" + std::to_string(k) + "]";
-    if (!(std::isfinite(p[0]) && std::isfinite(p[1]) && p[0] >= 0 && p[1] >= 0 &&
-          p[0] < side_m && p[1] < side_m))
-      throw InputError(path, "expected a position [x, y] in metres with 0 <= x, y < " +
-                                 fmt_num(side_m) + ", got [" + fmt_num(p[0]) + ", " +
-                                 fmt_num(p[1]) + "]");
+    if (!(std::isfinite(p[0]) && std::isfinite(p[1]) && p[0] >= 0 && p[1] >= 0 && p[0] < side_m && p[1] < side_m)) {
+      bad_position = k;
+      break;
+    }
     const CellIndex c = cell_of(p, s.cell_size);
-    if (obstacle_at.count(c))
-      throw InputError(path, "starts in cell " + cell_text(c) + ", which is obstacles[" +
-                                 std::to_string(obstacle_at[c]) + "]");
-    if (auto [it, fresh] = robot_at.emplace(c, k); !fresh)
-      throw InputError(path, "starts in cell " + cell_text(c) + ", already taken by robots[" +
-                                 std::to_string(it->second) + "]");
+    if (on_obstacle == n && !obstacle_cells.empty()) {
+      const auto at = obstacle_entry(c);
+      if (at != obstacle_cells.end() && cell_of_packed(*at) == cell_of_packed(packed(c, s.map_size, 0))) on_obstacle = k;
+    }
+    robot_cells.push_back(packed(c, s.map_size, k));
   }
+  std::sort(robot_cells.begin(), robot_cells.end());
+  const auto [taken, taker] = first_repeat(robot_cells, n);
+  const std::size_t first = std::min({bad_position, on_obstacle, taken});
+  if (first == n) return;
+  const std::string path = "robots[" + std::to_string(first) + "]";
+  const Point_m p = s.robots[first];
+  if (first == bad_position)
+    throw InputError(path, "expected a position [x, y] in metres with 0 <= x, y < " + fmt_num(side_m) + ", got [" +
+                               fmt_num(p[0]) + ", " + fmt_num(p[1]) + "]");
+  const CellIndex c = cell_of(p, s.cell_size);
+  if (first == on_obstacle) {
+    throw InputError(path, "starts in cell " + cell_text(c) + ", which is obstacles[" +
+                               std::to_string(index_of(*obstacle_entry(c))) + "]");
+  }
+  throw InputError(path, "starts in cell " + cell_text(c) + ", already taken by robots[" + std::to_string(taker) + "]");
 }
 
 }  // namespace

@@ -24,9 +24,13 @@
 namespace swarmcheck::exploration {
 
 struct ExplorationOptions {
-  // Planning steps with at least this many robots decide in parallel (oneTBB), grouped so that
-  // robots whose windows may interact stay in index order; below it, one thread.
-  int32_t parallel_min_robots = 512;
+  // Threads a run may use: 0 = every core (std::thread::hardware_concurrency), 1 = this thread
+  // only. Results are the same bits on any number.
+  int32_t threads = 0;
+  // Planning and deposits go parallel (oneTBB, over strips of the map, robots that may touch a
+  // cell in common kept in index order) when a step has at least this many robots; 0: decided
+  // per step from the work (robots x window cells) and the threads.
+  int32_t parallel_min_robots = 0;
   // Controllers and bodies of at least this many robots step in parallel.
   int32_t parallel_min_bodies = 4096;
 };

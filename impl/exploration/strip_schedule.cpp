@@ -1,0 +1,78 @@
+#include "impl/exploration/strip_schedule.hpp"
+
+#include <algorithm>
+
+namespace swarmcheck::impl::exploration {
+
+int32_t StripSchedule::build(std::span<const int32_t> rows, int32_t map_rows, int32_t reach, int32_t strips) {
+  const int64_t n = static_cast<int64_t>(rows.size());
+  const int64_t min_height = int64_t{reach} + 1;
+  // Strip boundaries at robot-count quantiles of the rows, each strip at least min_height rows.
+  row_count_.assign(static_cast<std::size_t>(map_rows), 0);
+  for (int32_t i : rows) ++row_count_[static_cast<std::size_t>(i)];
+  lo_.clear();
+  lo_.push_back(0);
+  const int64_t per_strip = std::max<int64_t>(1, (n + strips - 1) / std::max(1, strips));
+  int64_t in_strip = 0;
+  for (int32_t i = 0; i < map_rows; ++i) {
+    if (in_strip >= per_strip && i - lo_.back() >= min_height && map_rows - i >= min_height) {
+      lo_.push_back(i);
+      in_strip = 0;
+    }
+    in_strip += row_count_[static_cast<std::size_t>(i)];
+  }
+  count_ = static_cast<int32_t>(lo_.size());
+  lo_.push_back(map_rows);
+  if (count_ > capacity_) {
+    strips_ = std::make_unique<Strip[]>(static_cast<std::size_t>(count_));
+    capacity_ = count_;
+  }
+  // The strip of each row (reusing row_count_), then the members strip by strip in index order.
+  std::vector<int64_t>& start = start_;
+  start.assign(static_cast<std::size_t>(count_) + 1, 0);
+  for (int32_t k = 0; k < count_; ++k)
+    for (int32_t i = lo_[static_cast<std::size_t>(k)]; i < lo_[static_cast<std::size_t>(k) + 1]; ++i) {
+      start[static_cast<std::size_t>(k) + 1] += row_count_[static_cast<std::size_t>(i)];
+      row_count_[static_cast<std::size_t>(i)] = k;
+    }
+  for (int32_t k = 0; k < count_; ++k) start[static_cast<std::size_t>(k) + 1] += start[static_cast<std::size_t>(k)];
+  members_.resize(static_cast<std::size_t>(n));
+  border_.resize(static_cast<std::size_t>(n));
+  std::vector<int64_t>& fill = fill_;
+  fill.assign(start.begin(), start.end() - 1);
+  for (int64_t r = 0; r < n; ++r) {
+    const int32_t i = rows[static_cast<std::size_t>(r)];
+    const auto k = static_cast<std::size_t>(row_count_[static_cast<std::size_t>(i)]);
+    const auto p = static_cast<std::size_t>(fill[k]++);
+    members_[p] = static_cast<int32_t>(r);
+    uint8_t b = 0;
+    if (k > 0 && i - lo_[k] < reach) b |= 1U << kLower;                            // within reach of the strip below
+    if (k + 1 < static_cast<std::size_t>(count_) && lo_[k + 1] - 1 - i < reach) b |= 1U << kUpper;   // or above
+    border_[p] = b;
+  }
+  for (int side : {kLower, kUpper}) {
+    auto& next = next_border_pos_[side];
+    next.resize(static_cast<std::size_t>(n));
+    for (int32_t k = 0; k < count_; ++k) {
+      int64_t after = start[static_cast<std::size_t>(k) + 1];
+      for (int64_t p = after - 1; p >= start[static_cast<std::size_t>(k)]; --p) {
+        if (border_[static_cast<std::size_t>(p)] & (1U << side)) after = p;
+        next[static_cast<std::size_t>(p)] = after;
+      }
+    }
+  }
+  for (int32_t k = 0; k < count_; ++k) {
+    Strip& s = strips_[static_cast<std::size_t>(k)];
+    s.held.store(false, std::memory_order_relaxed);
+    s.begin = s.pos = start[static_cast<std::size_t>(k)];
+    s.end = start[static_cast<std::size_t>(k) + 1];
+    s.sum = 0;
+    for (int side : {kLower, kUpper}) {
+      const int64_t q = s.begin < s.end ? next_border_pos_[side][static_cast<std::size_t>(s.begin)] : s.end;
+      s.next_border[side].store(q < s.end ? members_[static_cast<std::size_t>(q)] : kNone, std::memory_order_relaxed);
+    }
+  }
+  return count_;
+}
+
+}  // namespace swarmcheck::impl::exploration

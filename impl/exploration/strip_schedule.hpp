@@ -1,0 +1,135 @@
+#pragma once
+// Per-robot work of one stage (a decision, or a deposit) in parallel, with exactly the result of
+// doing it robot by robot in index order.
+//
+// Robot r's work touches only cells within `radius` rows of its row, so two robots conflict only
+// when their rows are within reach = 2 * radius. The map's rows are cut into strips of at least
+// reach + 1 rows (balanced by robot count), so robots of strips that are not neighbours never
+// conflict. Each strip runs its robots in index order; a robot within reach of a neighbouring
+// strip's edge (a "border" robot) first waits until that neighbour has done every border robot
+// of its own facing edge with a smaller index. Any two conflicting robots are therefore done in
+// index order, which is all the result depends on.
+//
+// Waiting never blocks on a thread that is not running: a strip is held by one thread at a time,
+// and a thread that needs a neighbour nobody holds takes it and advances it itself. A wait is
+// always for a smaller robot index, so there is no cycle, and the schedule is correct on any
+// number of threads, one included, however the tasks are scheduled.
+//
+// The buffers are reused from step to step: no allocation once the sizes settle.
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include <atomic>
+#include <cstdint>
+#include <memory>
+#include <span>
+#include <thread>
+#include <vector>
+
+#include "spec/exploration/types.hpp"
+
+namespace swarmcheck::impl::exploration {
+
+class StripSchedule {
+ public:
+  // Cuts the rows [0, map_rows) into at most `strips` strips of at least reach + 1 rows each,
+  // balanced by the number of robots (rows[r] is robot r's row), and lists each strip's robots.
+  // Returns the number of strips made (1 means: no parallelism to be had).
+  int32_t build(std::span<const int32_t> rows, int32_t map_rows, int32_t reach, int32_t strips);
+
+  // Runs work(r, scratch) for every robot, in parallel over the strips in `arena`; the sum of what
+  // work returns. `scratch` is a per-strip object of type Scratch, reused across steps.
+  template <class Scratch, class Work>
+  int64_t run(tbb::task_arena& arena, std::vector<Scratch>& scratch, Work&& work);
+
+ private:
+  static constexpr int32_t kNone = INT32_MAX;
+  enum Side : int { kLower = 0, kUpper = 1 };
+
+  struct Strip {
+    std::atomic<bool> held{false};
+    std::atomic<int32_t> next_border[2] = {kNone, kNone};   // next robot index not yet done, per edge
+    int64_t begin = 0, end = 0, pos = 0;                     // positions in members_, pos: next to do
+    int64_t sum = 0;
+  };
+
+  bool try_hold(Strip& s) { return !s.held.exchange(true, std::memory_order_acquire); }
+  static void release(Strip& s) { s.held.store(false, std::memory_order_release); }
+  static void pause(int& spins) {
+    if (++spins < 64) return;
+    spins = 0;
+    std::this_thread::yield();
+  }
+
+  template <class Scratch, class Work>
+  void do_next(int32_t k, std::vector<Scratch>& scratch, Work& work);
+  template <class Scratch, class Work>
+  void wait_for(int32_t k, Side edge, int32_t index, std::vector<Scratch>& scratch, Work& work);
+
+  int32_t count_ = 0;
+  std::unique_ptr<Strip[]> strips_;
+  int32_t capacity_ = 0;
+  std::vector<int32_t> row_count_, lo_;   // robots per row; first row of each strip (+ map_rows)
+  std::vector<int32_t> members_;          // robot indices, strip by strip, ascending in a strip
+  std::vector<uint8_t> border_;           // per position: bit kLower, bit kUpper
+  std::vector<int64_t> next_border_pos_[2];   // per position: the strip's next border position, or end
+  std::vector<int64_t> start_, fill_;         // each strip's first position; the filling cursor
+};
+
+// Does strip k's next robot, after its neighbours have done their earlier border robots.
+template <class Scratch, class Work>
+void StripSchedule::do_next(int32_t k, std::vector<Scratch>& scratch, Work& work) {
+  Strip& s = strips_[static_cast<std::size_t>(k)];
+  const auto p = static_cast<std::size_t>(s.pos);
+  const int32_t r = members_[p];
+  if (border_[p] & (1U << kLower)) wait_for(k - 1, kUpper, r, scratch, work);
+  if (border_[p] & (1U << kUpper)) wait_for(k + 1, kLower, r, scratch, work);
+  s.sum += work(r, scratch[static_cast<std::size_t>(k)]);
+  ++s.pos;
+  // The robot was the next border robot of its edges: publish the one after it (release: its
+  // cells are written before a neighbour reads that it is done).
+  for (int side : {kLower, kUpper})
+    if (border_[p] & (1U << side)) {
+      int32_t next = kNone;
+      if (s.pos < s.end) {
+        const int64_t q = next_border_pos_[side][static_cast<std::size_t>(s.pos)];
+        if (q < s.end) next = members_[static_cast<std::size_t>(q)];
+      }
+      s.next_border[side].store(next, std::memory_order_release);
+    }
+}
+
+// Returns once strip k has done every robot of its `edge` border with an index below `index`,
+// advancing the strip itself when no thread holds it.
+template <class Scratch, class Work>
+void StripSchedule::wait_for(int32_t k, Side edge, int32_t index, std::vector<Scratch>& scratch, Work& work) {
+  Strip& s = strips_[static_cast<std::size_t>(k)];
+  int spins = 0;
+  while (s.next_border[edge].load(std::memory_order_acquire) < index) {
+    if (try_hold(s)) {
+      while (s.next_border[edge].load(std::memory_order_relaxed) < index) do_next(k, scratch, work);
+      release(s);
+      return;
+    }
+    pause(spins);
+  }
+}
+
+template <class Scratch, class Work>
+int64_t StripSchedule::run(tbb::task_arena& arena, std::vector<Scratch>& scratch, Work&& work) {
+  if (scratch.size() < static_cast<std::size_t>(count_)) scratch.resize(static_cast<std::size_t>(count_));
+  arena.execute([&] {
+    tbb::parallel_for(int32_t{0}, count_, [&](int32_t k) {
+      Strip& s = strips_[static_cast<std::size_t>(k)];
+      int spins = 0;
+      while (!try_hold(s)) pause(spins);   // a helper holds it for a while; it finishes the rest
+      while (s.pos < s.end) do_next(k, scratch, work);
+      release(s);
+    });
+  });
+  int64_t total = 0;
+  for (int32_t k = 0; k < count_; ++k) total += strips_[static_cast<std::size_t>(k)].sum;
+  return total;
+}
+
+}  // namespace swarmcheck::impl::exploration

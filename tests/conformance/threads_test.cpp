@@ -1,0 +1,98 @@
+// Planning and deposits in parallel over strips of the map (impl/exploration/strip_schedule.hpp)
+// against one thread: the same bits, step by step, whatever the number of threads and however the
+// robots lie (dense or sparse, near strip edges or not, every window size).
+#include <gtest/gtest.h>
+#include <rapidcheck/gtest.h>
+
+#include <algorithm>
+#include <numeric>
+
+#include "model/exploration/exploration_model.hpp"
+#include "spec/exploration/rng.hpp"
+#include "spec/exploration/scenario.hpp"
+#include "swarmcheck/exploration.hpp"
+#include "tests/conformance/record_difference.hpp"
+
+using namespace swarmcheck;
+using namespace swarmcheck::exploration;
+using swarmcheck::exploration::testing::first_difference_text;
+
+namespace {
+
+
+// A map with robots and obstacles on cells drawn without replacement.
+Scenario gen_layout() {
+  Scenario s = default_scenario();
+  s.map_size = *rc::gen::inRange(8, 97);
+  const int32_t cells = s.map_size * s.map_size;
+  const int32_t robots = *rc::gen::inRange(2, std::max(3, cells * *rc::gen::inRange(1, 40) / 100));
+  const int32_t obstacles = *rc::gen::inRange(0, std::max(1, (cells - robots) / 10));
+  std::vector<int32_t> order(static_cast<std::size_t>(cells));
+  std::iota(order.begin(), order.end(), 0);
+  const auto seed = *rc::gen::arbitrary<uint64_t>();
+  for (std::size_t k = order.size() - 1; k > 0; --k)   // seeded Fisher-Yates
+    std::swap(order[k], order[splitmix64(seed + k) % (k + 1)]);
+  s.robots.clear();
+  s.obstacles.clear();
+  for (int32_t k = 0; k < robots + obstacles; ++k) {
+    const int32_t c = order[static_cast<std::size_t>(k)];
+    if (k < robots)
+      s.robots.push_back({(c / s.map_size + 0.5) * s.cell_size, (c % s.map_size + 0.5) * s.cell_size});
+    else
+      s.obstacles.push_back({c / s.map_size, c % s.map_size});
+  }
+  s.params.s_range = *rc::gen::inRange(1, 4);
+  s.rule = *rc::gen::element(RuleSet::thesis, RuleSet::deterministic, RuleSet::stochastic);
+  s.mode = *rc::gen::element(Mode::abstract, Mode::abstract, Mode::cosim);
+  s.seed = *rc::gen::arbitrary<uint64_t>();
+  s.max_steps = s.mode == Mode::abstract ? 12 : 60;
+  validate(s);
+  return s;
+}
+
+}  // namespace
+
+RC_GTEST_PROP(Threads, StripPlanningGivesTheOneThreadBitsOnOneTwoFourAndEightThreadsForAnyLayout, ()) {
+  const Scenario s = gen_layout();
+  ExplorationOptions one;
+  one.threads = 1;
+  Exploration sequential(s, one);
+  std::vector<std::unique_ptr<Exploration>> parallel;
+  for (int32_t threads : {1, 2, 4, 8}) {
+    ExplorationOptions o;
+    o.threads = threads;
+    o.parallel_min_robots = 1;   // strips from the second robot on, not only for big steps
+    o.parallel_min_bodies = 1;
+    parallel.push_back(std::make_unique<Exploration>(s, o));
+  }
+  while (!sequential.done()) {
+    sequential.step();
+    for (std::size_t k = 0; k < parallel.size(); ++k) {
+      parallel[k]->step();
+      const std::string d = first_difference_text(sequential.record(), parallel[k]->record());
+      RC_ASSERT(d == "");
+    }
+  }
+}
+
+TEST(Threads, StripPlanningOfThousandsOfRobotsEqualsTheModel) {
+  Scenario s = default_scenario();
+  s.map_size = 96;
+  s.obstacles.clear();
+  s.robots.clear();
+  for (int32_t i = 0; i < 96; i += 2)
+    for (int32_t j = 0; j < 96; j += 3) s.robots.push_back({i + 0.5, j + 0.5});   // 1536 robots
+  s.mode = Mode::abstract;
+  s.rule = RuleSet::stochastic;
+  s.max_steps = 40;
+  ExplorationOptions parallel;
+  parallel.threads = 4;
+  parallel.parallel_min_robots = 1;
+  Exploration a(s, parallel);
+  swarmcheck::model::exploration::ExplorationModel m(s);
+  while (!m.done()) {
+    a.step();
+    m.step();
+    ASSERT_EQ(first_difference_text(m.record(), a.record()), "") << a.steps();
+  }
+}
