@@ -15,7 +15,6 @@ constexpr int32_t kPrefetchRangeMax = 2;    // s_range up to which windows are p
 // Below this many window cells in a stage (robots x (2 s + 1)^2), cutting strips and handing them
 // to threads costs more than it saves (bench_exploration, threads 1 against all).
 constexpr int64_t kParallelMinWindowCells = int64_t{1} << 15;
-constexpr int32_t kStripsPerThread = 4;     // spare strips, so a thread with a light one takes another
 
 int32_t threads_of(const swarmcheck::exploration::ExplorationOptions& o) {
   if (o.threads > 0) return o.threads;
@@ -60,7 +59,9 @@ int32_t Environment::strips_for(std::size_t robots) const {
     const int64_t side = 2 * int64_t{cfg_.scenario.params.s_range} + 1;
     if (n * side * side < kParallelMinWindowCells) return 1;
   }
-  return threads_ * kStripsPerThread;
+  // One strip per thread, each held by its thread for the whole stage: a strip more would be one
+  // a thread takes over from its neighbour, holding it while the neighbour's own task spins.
+  return threads_;
 }
 
 // A robot's decision touches only its window (s_range rows either side of its row), and its
@@ -71,10 +72,19 @@ int64_t Environment::plan(spec::EnvironmentState& env, LazyGrid& grid) const {
   if (strips > 1) {
     rows_.resize(env.robots.size());
     for (std::size_t r = 0; r < rows_.size(); ++r) rows_[r] = env.robots[r].cell[0];
-    if (strips_.build(rows_, cfg_.scenario.map_size, 2 * cfg_.scenario.params.s_range, strips) > 1)
-      return strips_.run(arena_, strip_scratch_, [&](int32_t r, std::vector<Candidate>& w) {
-        return spec::plan_robot(cfg_, env, grid, r, w);
+    if (strips_.build(rows_, cfg_.scenario.map_size, 2 * cfg_.scenario.params.s_range, strips) > 1) {
+      for (StripPlanning& p : strip_planning_) p.decisions.clear();
+      // The robots' records are written after the stage: threads in step through the robot indices,
+      // writing neighbouring records as they went, would fight over their cache lines.
+      const int64_t newly = strips_.run(arena_, strip_planning_, [&](int32_t r, StripPlanning& p) {
+        int64_t n = 0;
+        p.decisions.emplace_back(r, spec::decide_on_grid(cfg_, env, grid, r, p.candidates, n));
+        return n;
       });
+      for (const StripPlanning& p : strip_planning_)
+        for (const auto& [r, d] : p.decisions) spec::apply_decision_to_robot(cfg_, env, r, d);
+      return newly;
+    }
   }
   return plan_sequential(env, grid);
 }

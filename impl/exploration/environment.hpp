@@ -53,7 +53,11 @@ class Environment {
   // The parallel stages' schedules and per-strip candidates, reused from step to step.
   mutable StripSchedule strips_;
   mutable std::vector<int32_t> rows_;
-  mutable std::vector<std::vector<Candidate>> strip_scratch_;
+  struct StripPlanning {
+    std::vector<Candidate> candidates;
+    std::vector<std::pair<int32_t, swarmcheck::exploration::RobotDecision>> decisions;   // applied after
+  };
+  mutable std::vector<StripPlanning> strip_planning_;
   mutable std::vector<char> no_scratch_;
   // Last: its initialisation runs the deposit stage, which uses the members above.
   swarmcheck::exploration::EnvironmentState env_;

@@ -46,7 +46,7 @@ class StripSchedule {
   static constexpr int32_t kNone = INT32_MAX;
   enum Side : int { kLower = 0, kUpper = 1 };
 
-  struct Strip {
+  struct alignas(64) Strip {   // a cache line each: strips are written by different threads
     std::atomic<bool> held{false};
     std::atomic<int32_t> next_border[2] = {kNone, kNone};   // next robot index not yet done, per edge
     int64_t begin = 0, end = 0, pos = 0;                     // positions in members_, pos: next to do

@@ -99,30 +99,50 @@ void gather_candidates(const EnvironmentConfig& cfg, const G& grid, CellIndex c,
       if (i != c[0] || j != c[1]) out.push_back(grid.candidate(CellIndex{i, j}, tick));
 }
 
-// Applies one robot's decision; returns how many cells it newly marked visited (0 or 1).
+// A decision's effect on the grid (the old cell released, the new one occupied, a cell marked
+// visited); returns how many cells it newly marked visited (0 or 1). `from` is the robot's cell.
 template <EnvironmentGrid G>
-int64_t apply_decision(const EnvironmentConfig& cfg, EnvironmentState& env, G& grid, int32_t r,
-                       const RobotDecision& d) {
-  EnvRobot& robot = env.robots[static_cast<std::size_t>(r)];
+int64_t apply_decision_to_grid(G& grid, CellIndex from, int32_t r, const RobotDecision& d) {
   if (d.moves) {
-    grid.release(robot.cell);
-    robot.cell = d.to;
-    robot.waypoint = centre_of(d.to, cfg.scenario.cell_size);
+    grid.release(from);
     if (d.occupies) grid.occupy(d.to, r);
   }
-  env.deposit_centre[static_cast<std::size_t>(r)] = d.deposit_centre;
   return d.marks && grid.mark_visited(d.mark) ? 1 : 0;
 }
 
-// One robot's planning step: gather, choose, decide, apply. `scratch` is reused storage.
-// Returns how many cells it newly marked visited.
+// A decision's effect on the robot's record: its cell, waypoint and deposit centre. Nothing
+// another robot's decision reads (they read the grid), so it may wait until the stage's end.
+inline void apply_decision_to_robot(const EnvironmentConfig& cfg, EnvironmentState& env, int32_t r,
+                                    const RobotDecision& d) {
+  if (d.moves) {
+    EnvRobot& robot = env.robots[static_cast<std::size_t>(r)];
+    robot.cell = d.to;
+    robot.waypoint = centre_of(d.to, cfg.scenario.cell_size);
+  }
+  env.deposit_centre[static_cast<std::size_t>(r)] = d.deposit_centre;
+}
+
+// One robot's decision on the grid: gather, choose, decide, and the decision's grid effects.
+// `newly` counts the cells it newly marked visited. `scratch` is reused storage.
 template <EnvironmentGrid G>
-int64_t plan_robot(const EnvironmentConfig& cfg, EnvironmentState& env, G& grid, int32_t r,
-                   std::vector<Candidate>& scratch) {
+RobotDecision decide_on_grid(const EnvironmentConfig& cfg, const EnvironmentState& env, G& grid, int32_t r,
+                             std::vector<Candidate>& scratch, int64_t& newly) {
   const CellIndex current = env.robots[static_cast<std::size_t>(r)].cell;
   gather_candidates(cfg, grid, current, env.tick, scratch);
   const Choice ch = choose(*cfg.rules, cfg.terms, scratch, DrawSite{cfg.scenario.seed, env.tick, r});
-  return apply_decision(cfg, env, grid, r, decide(*cfg.rules, current, scratch, ch));
+  const RobotDecision d = decide(*cfg.rules, current, scratch, ch);
+  newly += apply_decision_to_grid(grid, current, r, d);
+  return d;
+}
+
+// One robot's planning step: its decision on the grid, then on its record. Returns how many cells
+// it newly marked visited.
+template <EnvironmentGrid G>
+int64_t plan_robot(const EnvironmentConfig& cfg, EnvironmentState& env, G& grid, int32_t r,
+                   std::vector<Candidate>& scratch) {
+  int64_t newly = 0;
+  apply_decision_to_robot(cfg, env, r, decide_on_grid(cfg, env, grid, r, scratch, newly));
+  return newly;
 }
 
 // The deposit of one robot around `centre`, window cells in raster order.
