@@ -34,7 +34,7 @@ struct Counterexample {
 struct Coverage {
   std::map<std::string, int> cases_by_family;      // standard, long_horizon, edge_poses
   std::map<std::string, int> cases_by_rule_mode;   // "thesis/abstract", ...
-  int grouped_cases = 0;            // the impl planned by parallel groups
+  int grouped_cases = 0;            // the impl planned and deposited in parallel
   int64_t longest_run_steps = 0;
   int64_t max_cell_age = 0;         // ticks between a nonzero cell's write and its evaluation
   int cases_age_past_2_12 = 0;      // past the lazy grid's decay table (4096)

@@ -11,7 +11,7 @@
 //   edge_poses:    robots starting off the cell centres: on a cell's lower edge, a few ulps
 //                  below the next edge, at -0.0, tiny offsets; cosim mostly, so that controllers
 //                  and bodies run from them (and reach headings around +-pi)
-// Every family draws whether the impl plans by parallel groups even for few robots.
+// Every family draws whether the impl plans and deposits in parallel (over strips) even for few robots.
 #include <rapidcheck.h>
 
 #include <cstdint>
@@ -28,7 +28,7 @@ std::string_view family_name(Family f);
 struct ExplorationCase {
   swarmcheck::exploration::Scenario scenario;
   Family family = Family::standard;
-  bool grouped = false;   // impl option: plan by independent groups (parallel path) always
+  bool grouped = false;   // impl option: the parallel path (strips, 4 threads) always
 };
 
 // max_steps: the steps a standard case runs at most (the scenario's max_steps is set from it;

@@ -113,3 +113,30 @@ TEST(RunVerb, OverridesAreValidatedToo) {
   EXPECT_NE(r.out.find("params.step_size: expected at most 0.2 s in cosim mode"), std::string::npos) << r.out;
   fs::remove_all(d);
 }
+
+// Enough robots for the parallel stages (robots x window cells >= 2^15): the trace is the same
+// bytes on one thread, on two, on three, and with the thread count from the environment.
+TEST(RunVerb, ThreadsFlagAndEnvironmentGiveTheSameTraceBytesAsOneThread) {
+  const fs::path d = temp_dir();
+  std::string robots;
+  for (int k = 0; k < 4000; ++k)
+    robots += (k ? ", [" : "[") + std::to_string(4 * k / 128) + ".5, " + std::to_string(4 * k % 128) + ".5]";
+  const std::string file = write(d / "crowd.json", R"({"map_size": 128, "mode": "abstract", "rule": "stochastic",
+      "max_steps": 30, "robots": [)" + robots + "]}");
+  const auto trace = [&](const std::string& prefix, const std::string& flags, const std::string& name) {
+    const std::string out = (d / name).string();
+    const Result r = swarmcheck::testing::run_binary(prefix + SWARMCHECK_BIN, "run " + file + flags + " --trace " + out);
+    EXPECT_EQ(r.status, 1) << r.out;   // 30 steps do not complete the map
+    std::ifstream in(out, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  };
+  const std::string one = trace("", " --threads 1", "t1.jsonl");
+  ASSERT_GT(one.size(), 1000u);
+  EXPECT_EQ(trace("", " --threads 2", "t2.jsonl"), one);
+  EXPECT_EQ(trace("", " --threads 3", "t3.jsonl"), one);
+  EXPECT_EQ(trace("SWARMCHECK_THREADS=2 ", "", "env.jsonl"), one);
+  const Result bad = swarmcheck::testing::run_binary(std::string("SWARMCHECK_THREADS=many ") + SWARMCHECK_BIN, "run --steps 2");
+  EXPECT_EQ(bad.status, 2) << bad.out;
+  EXPECT_NE(bad.out.find("--threads"), std::string::npos) << bad.out;
+  fs::remove_all(d);
+}
