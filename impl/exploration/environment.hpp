@@ -59,6 +59,7 @@ class Environment {
   };
   mutable std::vector<StripPlanning> strip_planning_;
   mutable std::vector<char> no_scratch_;
+  mutable bool deposit_schedule_ready_ = false;   // the planning stage's strips serve the deposits
   // Last: its initialisation runs the deposit stage, which uses the members above.
   swarmcheck::exploration::EnvironmentState env_;
 };

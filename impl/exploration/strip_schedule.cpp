@@ -63,16 +63,24 @@ int32_t StripSchedule::build(std::span<const int32_t> rows, int32_t map_rows, in
   }
   for (int32_t k = 0; k < count_; ++k) {
     Strip& s = strips_[static_cast<std::size_t>(k)];
-    s.held.store(false, std::memory_order_relaxed);
-    s.begin = s.pos = start[static_cast<std::size_t>(k)];
+    s.begin = start[static_cast<std::size_t>(k)];
     s.end = start[static_cast<std::size_t>(k) + 1];
+  }
+  rewind();
+  return count_;
+}
+
+void StripSchedule::rewind() {
+  for (int32_t k = 0; k < count_; ++k) {
+    Strip& s = strips_[static_cast<std::size_t>(k)];
+    s.held.store(false, std::memory_order_relaxed);
+    s.pos = s.begin;
     s.sum = 0;
     for (int side : {kLower, kUpper}) {
       const int64_t q = s.begin < s.end ? next_border_pos_[side][static_cast<std::size_t>(s.begin)] : s.end;
       s.next_border[side].store(q < s.end ? members_[static_cast<std::size_t>(q)] : kNone, std::memory_order_relaxed);
     }
   }
-  return count_;
 }
 
 }  // namespace swarmcheck::impl::exploration

@@ -19,11 +19,11 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cstdint>
 #include <memory>
 #include <span>
-#include <thread>
 #include <vector>
 
 #include "spec/exploration/types.hpp"
@@ -37,10 +37,14 @@ class StripSchedule {
   // Returns the number of strips made (1 means: no parallelism to be had).
   int32_t build(std::span<const int32_t> rows, int32_t map_rows, int32_t reach, int32_t strips);
 
+  // Makes the strips built last ready to run again (the same robots, rows and reach).
+  void rewind();
+
   // Runs work(r, scratch) for every robot, in parallel over the strips in `arena`; the sum of what
-  // work returns. `scratch` is a per-strip object of type Scratch, reused across steps.
-  template <class Scratch, class Work>
-  int64_t run(tbb::task_arena& arena, std::vector<Scratch>& scratch, Work&& work);
+  // work returns. `scratch` is a per-strip object of type Scratch, reused across steps. ahead(r)
+  // is called a few robots before work(r) in the same strip (to prefetch what work will read).
+  template <class Scratch, class Work, class Ahead>
+  int64_t run(tbb::task_arena& arena, std::vector<Scratch>& scratch, Work&& work, Ahead&& ahead);
 
  private:
   static constexpr int32_t kNone = INT32_MAX;
@@ -51,20 +55,44 @@ class StripSchedule {
     std::atomic<int32_t> next_border[2] = {kNone, kNone};   // next robot index not yet done, per edge
     int64_t begin = 0, end = 0, pos = 0;                     // positions in members_, pos: next to do
     int64_t sum = 0;
+    // Bumped (and waiters woken) whenever next_border or held changes: a waiter reads it before
+    // looking, and sleeps only if it has not moved since, so no wake-up is lost.
+    std::atomic<uint32_t> epoch{0};
   };
 
   bool try_hold(Strip& s) { return !s.held.exchange(true, std::memory_order_acquire); }
-  static void release(Strip& s) { s.held.store(false, std::memory_order_release); }
-  static void pause(int& spins) {
-    if (++spins < 64) return;
-    spins = 0;
-    std::this_thread::yield();
+  static void changed(Strip& s) {
+    s.epoch.fetch_add(1, std::memory_order_release);
+    s.epoch.notify_all();
   }
+  static void release(Strip& s) {
+    s.held.store(false, std::memory_order_release);
+    changed(s);
+  }
+  // A spin of some tens of microseconds (the neighbour is usually a few robots behind, and a
+  // sleep and wake-up costs about that much), then sleep until the strip changes: a thread that
+  // waits longer never takes a core from the thread it waits for.
+  static void wait_change(Strip& s, uint32_t seen, int& spins) {
+    if (++spins < kSpinsBeforeSleep) {
+      cpu_relax();
+      return;
+    }
+    s.epoch.wait(seen, std::memory_order_acquire);
+  }
+  static void cpu_relax() {
+#if defined(__x86_64__) || defined(__i386__)
+    __builtin_ia32_pause();
+#elif defined(__aarch64__)
+    asm volatile("yield");
+#endif
+  }
+  static constexpr int kSpinsBeforeSleep = 2048;
+  static constexpr int64_t kAhead = 4;   // robots
 
-  template <class Scratch, class Work>
-  void do_next(int32_t k, std::vector<Scratch>& scratch, Work& work);
-  template <class Scratch, class Work>
-  void wait_for(int32_t k, Side edge, int32_t index, std::vector<Scratch>& scratch, Work& work);
+  template <class Scratch, class Work, class Ahead>
+  void do_next(int32_t k, std::vector<Scratch>& scratch, Work& work, Ahead& ahead);
+  template <class Scratch, class Work, class Ahead>
+  void wait_for(int32_t k, Side edge, int32_t index, std::vector<Scratch>& scratch, Work& work, Ahead& ahead);
 
   int32_t count_ = 0;
   std::unique_ptr<Strip[]> strips_;
@@ -77,13 +105,14 @@ class StripSchedule {
 };
 
 // Does strip k's next robot, after its neighbours have done their earlier border robots.
-template <class Scratch, class Work>
-void StripSchedule::do_next(int32_t k, std::vector<Scratch>& scratch, Work& work) {
+template <class Scratch, class Work, class Ahead>
+void StripSchedule::do_next(int32_t k, std::vector<Scratch>& scratch, Work& work, Ahead& ahead) {
   Strip& s = strips_[static_cast<std::size_t>(k)];
   const auto p = static_cast<std::size_t>(s.pos);
   const int32_t r = members_[p];
-  if (border_[p] & (1U << kLower)) wait_for(k - 1, kUpper, r, scratch, work);
-  if (border_[p] & (1U << kUpper)) wait_for(k + 1, kLower, r, scratch, work);
+  if (s.pos + kAhead < s.end) ahead(members_[p + kAhead]);
+  if (border_[p] & (1U << kLower)) wait_for(k - 1, kUpper, r, scratch, work, ahead);
+  if (border_[p] & (1U << kUpper)) wait_for(k + 1, kLower, r, scratch, work, ahead);
   s.sum += work(r, scratch[static_cast<std::size_t>(k)]);
   ++s.pos;
   // The robot was the next border robot of its edges: publish the one after it (release: its
@@ -96,34 +125,43 @@ void StripSchedule::do_next(int32_t k, std::vector<Scratch>& scratch, Work& work
         if (q < s.end) next = members_[static_cast<std::size_t>(q)];
       }
       s.next_border[side].store(next, std::memory_order_release);
+      changed(s);
     }
 }
 
 // Returns once strip k has done every robot of its `edge` border with an index below `index`,
 // advancing the strip itself when no thread holds it.
-template <class Scratch, class Work>
-void StripSchedule::wait_for(int32_t k, Side edge, int32_t index, std::vector<Scratch>& scratch, Work& work) {
+template <class Scratch, class Work, class Ahead>
+void StripSchedule::wait_for(int32_t k, Side edge, int32_t index, std::vector<Scratch>& scratch, Work& work,
+                             Ahead& ahead) {
   Strip& s = strips_[static_cast<std::size_t>(k)];
   int spins = 0;
-  while (s.next_border[edge].load(std::memory_order_acquire) < index) {
+  for (;;) {
+    const uint32_t seen = s.epoch.load(std::memory_order_acquire);
+    if (s.next_border[edge].load(std::memory_order_acquire) >= index) return;
     if (try_hold(s)) {
-      while (s.next_border[edge].load(std::memory_order_relaxed) < index) do_next(k, scratch, work);
+      while (s.next_border[edge].load(std::memory_order_relaxed) < index) do_next(k, scratch, work, ahead);
       release(s);
       return;
     }
-    pause(spins);
+    wait_change(s, seen, spins);
   }
 }
 
-template <class Scratch, class Work>
-int64_t StripSchedule::run(tbb::task_arena& arena, std::vector<Scratch>& scratch, Work&& work) {
+template <class Scratch, class Work, class Ahead>
+int64_t StripSchedule::run(tbb::task_arena& arena, std::vector<Scratch>& scratch, Work&& work, Ahead&& ahead) {
   if (scratch.size() < static_cast<std::size_t>(count_)) scratch.resize(static_cast<std::size_t>(count_));
   arena.execute([&] {
     tbb::parallel_for(int32_t{0}, count_, [&](int32_t k) {
       Strip& s = strips_[static_cast<std::size_t>(k)];
       int spins = 0;
-      while (!try_hold(s)) pause(spins);   // a helper holds it for a while; it finishes the rest
-      while (s.pos < s.end) do_next(k, scratch, work);
+      for (;;) {   // a helper may hold it for a while; this task finishes the rest
+        const uint32_t seen = s.epoch.load(std::memory_order_acquire);
+        if (try_hold(s)) break;
+        wait_change(s, seen, spins);
+      }
+      for (int64_t q = s.pos; q < std::min(s.end, s.pos + kAhead); ++q) ahead(members_[static_cast<std::size_t>(q)]);
+      while (s.pos < s.end) do_next(k, scratch, work, ahead);
       release(s);
     });
   });
