@@ -2,6 +2,8 @@
 // backward over a reverse CSR built once).
 #include "impl/supervisor/reach.hpp"
 
+#include <algorithm>
+
 #include "impl/supervisor/operations.hpp"
 #include "spec/util/demand.hpp"
 
@@ -95,5 +97,22 @@ std::vector<StateId> blocking_states(const Fsm& f) {
 }
 
 bool is_nonblocking(const Fsm& f) { return blocking_states(f).empty(); }
+
+bool every_state_coaccessible(const Fsm& f) {
+  const auto coac = coaccessible_mask(f);
+  return std::all_of(coac.begin(), coac.end(), [](std::uint8_t c) { return c != 0; });
+}
+
+swarmcheck::supervisor::CheckReport check(const Fsm& f) {
+  const auto ac = accessible_mask(f);
+  const auto coac = coaccessible_mask(f);
+  swarmcheck::supervisor::CheckReport r;
+  for (StateId s = 0; s < f.state_count(); ++s) {
+    if (!ac[s]) r.unreachable_states.push_back(f.state_names[s]);
+    if (ac[s] && !coac[s]) r.blocking_states.push_back(f.state_names[s]);
+    if (!coac[s]) r.coaccessible = false;
+  }
+  return r;
+}
 
 }  // namespace swarmcheck::impl::supervisor
