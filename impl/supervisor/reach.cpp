@@ -54,20 +54,21 @@ std::vector<std::uint8_t> coreachable(const ReverseEdges& r, const std::vector<s
   SWARM_DEMAND(!within || within->size() == n);
   auto inside = [&](StateId s) { return !within || (*within)[s]; };
   std::vector<std::uint8_t> seen(n, 0);
-  std::vector<StateId> stack;
+  // Breadth first (the vector is the FIFO): states found together sit close in a product's
+  // breadth-first numbering, so the walk reads memory in runs rather than at random.
+  std::vector<StateId> queue;
   for (StateId s = 0; s < n; ++s)
     if (seeds[s] && inside(s)) {
       seen[s] = 1;
-      stack.push_back(s);
+      queue.push_back(s);
     }
-  while (!stack.empty()) {
-    const StateId t = stack.back();
-    stack.pop_back();
+  for (std::size_t head = 0; head < queue.size(); ++head) {
+    const StateId t = queue[head];
     for (auto i = r.first[t]; i < r.first[t + 1]; ++i) {
       const StateId s = r.source[i];
       if (!seen[s] && inside(s)) {
         seen[s] = 1;
-        stack.push_back(s);
+        queue.push_back(s);
       }
     }
   }
