@@ -61,8 +61,9 @@ bool is_separator(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\
 std::string str(std::string_view s) { return std::string(s); }
 
 // Distinct names (views into the text) numbered in order of first appearance: open addressing
-// over the ids, with each name's hash kept, so a lookup allocates nothing (a node-based map
-// allocates on every emplace, and that was most of the reading time).
+// whose slots hold the id and the hash's high half, so a lookup allocates nothing (a node-based
+// map allocates on every emplace, and that was most of the reading time) and a probe compares
+// text only when the hashes agree.
 class NameTable {
  public:
   std::size_t size() const { return names_.size(); }
@@ -72,31 +73,35 @@ class NameTable {
   std::pair<std::uint32_t, bool> intern(std::string_view name) {
     if (2 * (names_.size() + 1) > slots_.size()) grow();
     const std::uint64_t h = std::hash<std::string_view>{}(name);
+    const auto tag = static_cast<std::uint32_t>(h >> 32);
     const std::size_t mask = slots_.size() - 1;
     std::size_t i = h & mask;
-    for (; slots_[i] != kNone; i = (i + 1) & mask)
-      if (hashes_[slots_[i]] == h && names_[slots_[i]] == name) return {slots_[i], false};
+    for (; slots_[i].id != kNone; i = (i + 1) & mask)
+      if (slots_[i].tag == tag && names_[slots_[i].id] == name) return {slots_[i].id, false};
     const auto id = static_cast<std::uint32_t>(names_.size());
-    slots_[i] = id;
+    slots_[i] = {id, tag};
     names_.push_back(name);
-    hashes_.push_back(h);
+    homes_.push_back(h);
     return {id, true};
   }
 
  private:
   static constexpr std::uint32_t kNone = UINT32_MAX;
+  struct Slot {
+    std::uint32_t id = kNone, tag = 0;
+  };
   void grow() {
-    slots_.assign(std::max<std::size_t>(64, 2 * slots_.size()), kNone);
+    slots_.assign(std::max<std::size_t>(64, 2 * slots_.size()), Slot{});
     const std::size_t mask = slots_.size() - 1;
     for (std::uint32_t id = 0; id < names_.size(); ++id) {
-      std::size_t i = hashes_[id] & mask;
-      while (slots_[i] != kNone) i = (i + 1) & mask;
-      slots_[i] = id;
+      std::size_t i = homes_[id] & mask;
+      while (slots_[i].id != kNone) i = (i + 1) & mask;
+      slots_[i] = {id, static_cast<std::uint32_t>(homes_[id] >> 32)};
     }
   }
   std::vector<std::string_view> names_;
-  std::vector<std::uint64_t> hashes_;
-  std::vector<std::uint32_t> slots_;  // power-of-two size, at most half full
+  std::vector<std::uint64_t> homes_;  // [id]: the full hash, to place the id again on growth
+  std::vector<Slot> slots_;           // power-of-two size, at most half full
 };
 
 class Reader {
