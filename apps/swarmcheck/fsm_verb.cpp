@@ -6,14 +6,18 @@
 
 #include <fmt/format.h>
 
+#include <functional>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <optional>
 
 #include "apps/swarmcheck/verb.hpp"
 #include "spec/util/hana_json.hpp"
 #include "conformance/supervisor/engine.hpp"
 #include "views/fsm_svg.hpp"
 #include "impl/io/atomic_file.hpp"
+#include "impl/supervisor/fsm_compact_io.hpp"
+#include "impl/supervisor/operations.hpp"
 #include "swarmcheck/supervisor.hpp"
 
 namespace swarmcheck::cli {
@@ -22,6 +26,7 @@ namespace {
 
 namespace sv = swarmcheck::supervisor;
 namespace engines = swarmcheck::conformance::supervisor;
+namespace is = swarmcheck::impl::supervisor;
 using sv::Automaton;
 using Json = nlohmann::ordered_json;
 
@@ -43,23 +48,72 @@ std::vector<Automaton> read_all(const std::vector<std::string>& paths) {
   return out;
 }
 
+// The library's engine works on the compact form (is::Fsm) from the file to the output: no
+// Automaton value, whose maps of strings cost gigabytes at millions of states. The model's
+// engine works on values; both print through the same code, so their outputs are alike.
+std::vector<is::Fsm> read_all_compact(const std::vector<std::string>& paths) {
+  std::vector<is::Fsm> out;
+  for (const auto& p : paths) out.push_back(is::read_fsm_compact_file(p));
+  return out;
+}
+
+std::vector<const is::Fsm*> pointers(const std::vector<is::Fsm>& fs) {
+  std::vector<const is::Fsm*> out;
+  for (const auto& f : fs) out.push_back(&f);
+  return out;
+}
+
+std::size_t count_set(const std::vector<std::uint8_t>& flags) {
+  std::size_t n = 0;
+  for (const auto b : flags) n += b ? 1 : 0;
+  return n;
+}
+
+// What `fsm check` prints, from either engine.
+struct CheckFacts {
+  std::size_t states = 0, marked = 0, events = 0, controllable = 0, transitions = 0;
+  std::optional<std::string> initial;
+  sv::CheckReport report;
+};
+
+CheckFacts check_facts(const std::string& path, engines::Engine engine) {
+  CheckFacts c;
+  if (engine == engines::Engine::impl) {
+    const is::Fsm f = is::read_fsm_compact_file(path);
+    c.report = is::check(f);
+    c.states = f.state_count();
+    c.marked = count_set(f.marked);
+    c.events = f.event_count();
+    c.controllable = count_set(f.controllable);
+    c.transitions = f.edge_count();
+    if (f.state_count() > 0) c.initial = f.state_names.front();
+    return c;
+  }
+  const Automaton a = sv::read_fsm_file(path);
+  c.report = engines::check(a, engine);
+  c.states = a.states.size();
+  c.marked = a.marked.size();
+  c.events = a.events.size();
+  for (const auto& [e, attr] : a.events) c.controllable += attr.controllable ? 1 : 0;
+  c.transitions = swarmcheck::supervisor::transition_count(a);
+  if (!a.states.empty()) c.initial = a.states.front();
+  return c;
+}
+
 int run_check(const FsmOptions& o) {
-  const Automaton a = sv::read_fsm_file(o.files.front());
-  const sv::CheckReport r = engines::check(a, engines::engine_named(o.engine));
-  const std::vector<std::string>& blocking = r.blocking_states;
-  const std::vector<std::string>& unreachable = r.unreachable_states;
-  const bool coaccessible = r.coaccessible;
-  std::size_t controllable = 0;
-  for (const auto& [e, attr] : a.events) controllable += attr.controllable ? 1 : 0;
+  const CheckFacts c = check_facts(o.files.front(), engines::engine_named(o.engine));
+  const std::vector<std::string>& blocking = c.report.blocking_states;
+  const std::vector<std::string>& unreachable = c.report.unreachable_states;
+  const bool coaccessible = c.report.coaccessible;
   const bool nonblocking = blocking.empty();
   if (o.json) {
     print_json({{"file", o.files.front()},
-                {"states", a.states.size()},
-                {"initial", a.states.empty() ? Json(nullptr) : Json(a.states.front())},
-                {"marked", a.marked.size()},
-                {"events", a.events.size()},
-                {"controllable_events", controllable},
-                {"transitions", swarmcheck::supervisor::transition_count(a)},
+                {"states", c.states},
+                {"initial", c.initial ? Json(*c.initial) : Json(nullptr)},
+                {"marked", c.marked},
+                {"events", c.events},
+                {"controllable_events", c.controllable},
+                {"transitions", c.transitions},
                 {"deterministic", true},  // the reader refuses nondeterministic files
                 {"accessible", unreachable.empty()},
                 {"unreachable_states", unreachable},
@@ -68,8 +122,7 @@ int run_check(const FsmOptions& o) {
                 {"blocking_states", blocking}});
   } else {
     fmt::print("{}: {} states ({} marked), {} events ({} controllable), {} transitions\n",
-               o.files.front(), a.states.size(), a.marked.size(), a.events.size(), controllable,
-               swarmcheck::supervisor::transition_count(a));
+               o.files.front(), c.states, c.marked, c.events, c.controllable, c.transitions);
     fmt::print("deterministic: yes\naccessible: {} ({} unreachable)\ncoaccessible: {}\n",
                unreachable.empty() ? "yes" : "no", unreachable.size(),
                coaccessible ? "yes" : "no");
@@ -81,42 +134,82 @@ int run_check(const FsmOptions& o) {
 
 int run_product(const FsmOptions& o) {
   const engines::Engine engine = engines::engine_named(o.engine);
-  const Automaton p = engines::product(read_all(o.files), o.files, engine, o.budgets.memory_bytes);
-  sv::write_fsm_file(o.out, p);
+  std::size_t states = 0, transitions = 0;
+  std::function<bool()> nonblocking;  // only asked for --json
+  std::vector<is::Fsm> parts;
+  is::Product compact;
+  Automaton p;
+  if (engine == engines::Engine::impl) {
+    parts = read_all_compact(o.files);
+    compact = is::product_with_tuples(pointers(parts), o.files, o.budgets.memory_bytes);
+    is::write_fsm_compact_file(o.out, compact.fsm, is::name_speller(compact.fsm, &compact.names));
+    states = compact.fsm.state_count();
+    transitions = compact.fsm.edge_count();
+    // A product holds only accessible states: nonblocking is coaccessibility of them all.
+    nonblocking = [&] { return is::every_state_coaccessible(compact.fsm); };
+  } else {
+    p = engines::product(read_all(o.files), o.files, engine, o.budgets.memory_bytes);
+    sv::write_fsm_file(o.out, p);
+    states = p.states.size();
+    transitions = swarmcheck::supervisor::transition_count(p);
+    nonblocking = [&] { return engines::is_nonblocking(p, engine); };
+  }
   if (o.json)
     print_json({{"output", o.out},
-                {"states", p.states.size()},
-                {"transitions", swarmcheck::supervisor::transition_count(p)},
-                {"nonblocking", engines::is_nonblocking(p, engine)}});
+                {"states", states},
+                {"transitions", transitions},
+                {"nonblocking", nonblocking()}});
   else
-    fmt::print("{}: {} states, {} transitions\n", o.out, p.states.size(),
-               swarmcheck::supervisor::transition_count(p));
+    fmt::print("{}: {} states, {} transitions\n", o.out, states, transitions);
   return 0;
 }
 
-int run_synth(const FsmOptions& o) {
-  const engines::Engine engine = engines::engine_named(o.engine);
+// What `fsm synth` prints, from either engine.
+struct SynthFacts {
+  std::size_t plant_states = 0, spec_states = 0, states = 0, transitions = 0, marked = 0;
+  bool controllable = true;
+};
+
+SynthFacts synth_compact(const FsmOptions& o) {
+  const std::vector<is::Fsm> plants = read_all_compact(o.plants);
+  const is::Fsm plant = is::product(pointers(plants), o.plants, o.budgets.memory_bytes);
+  const std::vector<is::Fsm> specs = read_all_compact(o.specs);
+  const is::Fsm spec = is::product(pointers(specs), o.specs, o.budgets.memory_bytes);
+  const is::Synthesis sup = is::synthesize(plant, spec, o.budgets.memory_bytes);
+  is::write_fsm_compact_file(o.out, sup.supervisor, is::name_speller(sup.supervisor, &sup.names));
+  return {plant.state_count(), spec.state_count(), sup.supervisor.state_count(),
+          sup.supervisor.edge_count(), count_set(sup.supervisor.marked), sup.spec_controllable};
+}
+
+SynthFacts synth_values(const FsmOptions& o, engines::Engine engine) {
   const Automaton plant = engines::product(read_all(o.plants), o.plants, engine, o.budgets.memory_bytes);
   const Automaton spec = engines::product(read_all(o.specs), o.specs, engine, o.budgets.memory_bytes);
   const Automaton sup = engines::supcon(plant, spec, engine, o.budgets.memory_bytes);
   const bool controllable = engines::is_controllable(plant, spec, engine);
   sv::write_fsm_file(o.out, sup);
-  const bool empty = sup.states.empty();
+  return {plant.states.size(), spec.states.size(), sup.states.size(),
+          swarmcheck::supervisor::transition_count(sup), sup.marked.size(), controllable};
+}
+
+int run_synth(const FsmOptions& o) {
+  const engines::Engine engine = engines::engine_named(o.engine);
+  const SynthFacts s = engine == engines::Engine::impl ? synth_compact(o) : synth_values(o, engine);
+  const bool empty = s.states == 0;
   if (o.json)
     print_json({{"output", o.out},
-                {"plant_states", plant.states.size()},
-                {"spec_states", spec.states.size()},
-                {"spec_controllable", controllable},
-                {"states", sup.states.size()},
-                {"transitions", swarmcheck::supervisor::transition_count(sup)},
-                {"marked", sup.marked.size()},
+                {"plant_states", s.plant_states},
+                {"spec_states", s.spec_states},
+                {"spec_controllable", s.controllable},
+                {"states", s.states},
+                {"transitions", s.transitions},
+                {"marked", s.marked},
                 {"empty", empty}});
   else
     fmt::print("{}: supervisor of {} states, {} transitions{} (plant {} states, spec {} states, "
                "spec {}controllable as given)\n",
-               o.out, sup.states.size(), swarmcheck::supervisor::transition_count(sup),
+               o.out, s.states, s.transitions,
                empty ? " (EMPTY: no controllable nonblocking behaviour exists)" : "",
-               plant.states.size(), spec.states.size(), controllable ? "" : "not ");
+               s.plant_states, s.spec_states, s.controllable ? "" : "not ");
   return 0;
 }
 
@@ -136,11 +229,24 @@ int run_export(const FsmOptions& o) {
 Json witness(const std::vector<std::string>& w) { return Json(w); }
 
 int run_compare(const FsmOptions& o) {
-  const Automaton a = sv::read_fsm_file(o.files[0]);
-  const Automaton b = sv::read_fsm_file(o.files[1]);
   const engines::Engine engine = engines::engine_named(o.engine);
-  const sv::Inclusion ab = engines::language_inclusion(a, b, engine);
-  const sv::Inclusion ba = engines::language_inclusion(b, a, engine);
+  std::size_t a_states = 0, b_states = 0;
+  sv::Inclusion ab, ba;
+  if (engine == engines::Engine::impl) {
+    const is::Fsm a = is::read_fsm_compact_file(o.files[0]);
+    const is::Fsm b = is::read_fsm_compact_file(o.files[1]);
+    a_states = a.state_count();
+    b_states = b.state_count();
+    ab = is::language_inclusion(a, b);
+    ba = is::language_inclusion(b, a);
+  } else {
+    const Automaton a = sv::read_fsm_file(o.files[0]);
+    const Automaton b = sv::read_fsm_file(o.files[1]);
+    a_states = a.states.size();
+    b_states = b.states.size();
+    ab = engines::language_inclusion(a, b, engine);
+    ba = engines::language_inclusion(b, a, engine);
+  }
   if (o.json) {
     auto side = [](const sv::Inclusion& i) {
       return Json{{"closed", i.closed},
@@ -148,8 +254,8 @@ int run_compare(const FsmOptions& o) {
                   {"closed_witness", i.closed ? Json(nullptr) : witness(i.closed_witness)},
                   {"marked_witness", i.marked ? Json(nullptr) : witness(i.marked_witness)}};
     };
-    print_json({{"a", {{"file", o.files[0]}, {"states", a.states.size()}}},
-                {"b", {{"file", o.files[1]}, {"states", b.states.size()}}},
+    print_json({{"a", {{"file", o.files[0]}, {"states", a_states}}},
+                {"b", {{"file", o.files[1]}, {"states", b_states}}},
                 {"a_in_b", side(ab)},
                 {"b_in_a", side(ba)}});
   } else {
@@ -158,8 +264,8 @@ int run_compare(const FsmOptions& o) {
                  fmt::join(i.closed_witness, " "), i.marked ? "yes" : "no",
                  fmt::join(i.marked_witness, " "));
     };
-    fmt::print("A = {} ({} states), B = {} ({} states)\n", o.files[0], a.states.size(),
-               o.files[1], b.states.size());
+    fmt::print("A = {} ({} states), B = {} ({} states)\n", o.files[0], a_states,
+               o.files[1], b_states);
     line("A in B", ab);
     line("B in A", ba);
   }

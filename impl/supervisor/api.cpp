@@ -2,41 +2,19 @@
 // inputs to the CSR form, runs the fast operation (operations.hpp) and gives a value back; and
 // the atomic .fsm file writer. (The reader and writer of the text are fsm_read.cpp and
 // fsm_write.cpp, which the fuzz target builds alone.)
-#include <algorithm>
-
 #include "impl/io/atomic_file.hpp"
 #include "impl/supervisor/operations.hpp"
 #include "swarmcheck/supervisor.hpp"
 
 namespace swarmcheck::supervisor {
 
-namespace {
-
 namespace is = swarmcheck::impl::supervisor;
-
-std::vector<State> names_where(const is::Fsm& f, const std::vector<std::uint8_t>& mask,
-                               std::uint8_t value) {
-  std::vector<State> out;
-  for (is::StateId s = 0; s < f.state_count(); ++s)
-    if (mask[s] == value) out.push_back(f.state_names[s]);
-  return out;
-}
-
-}  // namespace
 
 void write_fsm_file(const std::string& path, const Automaton& a) {
   impl::io::write_file_atomically(path, write_fsm(a));
 }
 
-CheckReport check(const Automaton& a) {
-  const is::Fsm f = is::compile(a);
-  CheckReport r;
-  r.unreachable_states = names_where(f, is::accessible_mask(f), 0);
-  for (const is::StateId s : is::blocking_states(f)) r.blocking_states.push_back(f.state_names[s]);
-  const auto coac = is::coaccessible_mask(f);
-  r.coaccessible = std::all_of(coac.begin(), coac.end(), [](std::uint8_t c) { return c != 0; });
-  return r;
-}
+CheckReport check(const Automaton& a) { return is::check(is::compile(a)); }
 
 bool is_nonblocking(const Automaton& a) { return is::is_nonblocking(is::compile(a)); }
 
@@ -57,7 +35,7 @@ Automaton product(const std::vector<Automaton>& parts, const std::vector<std::st
   for (const auto& a : parts) compiled.push_back(is::compile(a));
   std::vector<const is::Fsm*> ptrs;
   for (const auto& f : compiled) ptrs.push_back(&f);
-  return is::decompile(is::product(ptrs, named, nullptr, max_bytes));
+  return is::decompile(is::product(ptrs, named, max_bytes));
 }
 
 bool is_controllable(const Automaton& plant, const Automaton& spec) {

@@ -23,7 +23,7 @@ EventId Fsm::event_id(const std::string& name) const {
 }
 
 void set_edges(Fsm& f, const std::vector<std::vector<std::pair<EventId, StateId>>>& edges) {
-  SWARM_DEMAND(edges.size() == f.state_names.size());
+  SWARM_DEMAND(edges.size() == f.marked.size());
   f.first_edge.assign(edges.size() + 1, 0);
   f.edge_event.clear();
   f.edge_target.clear();
@@ -57,7 +57,35 @@ Fsm compile(const swarmcheck::supervisor::Automaton& a) {
   return f;
 }
 
+void TupleNames::append(StateId s, std::string& out) const {
+  const StateId* t = tuple(s);
+  for (std::size_t p = 0; p < parts.size(); ++p) {
+    if (p > 0) out += '.';
+    out += parts[p]->state_names[t[p]];
+  }
+}
+
+std::string TupleNames::name(StateId s) const {
+  std::string out;
+  append(s, out);
+  return out;
+}
+
+AppendName name_speller(const Fsm& f, const TupleNames* tuples) {
+  if (tuples) return [tuples](StateId s, std::string& out) { tuples->append(s, out); };
+  SWARM_DEMAND(f.named());
+  return [&f](StateId s, std::string& out) { out += f.state_names[s]; };
+}
+
+void store_names(Fsm& f, const TupleNames& tuples) {
+  SWARM_DEMAND(tuples.tuples.size() == std::size_t{f.state_count()} * tuples.parts.size());
+  f.state_names.clear();
+  f.state_names.reserve(f.state_count());
+  for (StateId s = 0; s < f.state_count(); ++s) f.state_names.push_back(tuples.name(s));
+}
+
 swarmcheck::supervisor::Automaton decompile(const Fsm& f) {
+  SWARM_DEMAND(f.named());
   swarmcheck::supervisor::Automaton a;
   a.states = f.state_names;
   for (EventId e = 0; e < f.event_count(); ++e)
@@ -71,8 +99,10 @@ swarmcheck::supervisor::Automaton decompile(const Fsm& f) {
   return a;
 }
 
-Fsm restrict_states(const Fsm& f, const std::vector<std::uint8_t>& keep) {
-  SWARM_DEMAND(keep.size() == f.state_names.size());
+Fsm restrict_states(const Fsm& f, const std::vector<std::uint8_t>& keep,
+                    std::vector<StateId>* old_ids) {
+  SWARM_DEMAND(keep.size() == f.marked.size());
+  if (old_ids) old_ids->clear();
   Fsm out;
   out.event_names = f.event_names;
   out.controllable = f.controllable;
@@ -85,10 +115,11 @@ Fsm restrict_states(const Fsm& f, const std::vector<std::uint8_t>& keep) {
   for (StateId s = 0; s < f.state_count(); ++s) {
     if (!keep[s]) continue;
     renumber[s] = out.state_count();
-    out.state_names.push_back(f.state_names[s]);
+    if (f.named()) out.state_names.push_back(f.state_names[s]);
     out.marked.push_back(f.marked[s]);
+    if (old_ids) old_ids->push_back(s);
   }
-  out.first_edge.assign(out.state_names.size() + 1, 0);
+  out.first_edge.assign(out.marked.size() + 1, 0);
   for (StateId s = 0; s < f.state_count(); ++s) {
     if (!keep[s]) continue;
     for (auto i = f.first_edge[s]; i < f.first_edge[s + 1]; ++i) {

@@ -8,6 +8,7 @@
 
 #include "impl/supervisor/fsm.hpp"
 #include "spec/supervisor/semantics.hpp"
+#include "swarmcheck/supervisor.hpp"
 
 namespace swarmcheck::impl::supervisor {
 
@@ -18,18 +19,40 @@ Fsm trim(const Fsm& f);
 // Accessible states that cannot reach a marked state, ascending.
 std::vector<StateId> blocking_states(const Fsm& f);
 bool is_nonblocking(const Fsm& f);
+// Every state can reach a marked state: nonblocking, for an automaton known to be accessible (a
+// product is), at half the cost of is_nonblocking.
+bool every_state_coaccessible(const Fsm& f);
 
 // The synchronous product of all parts (accessible part), states named "x1.x2...", in
 // breadth-first order with events in name order. `names` name the parts in error messages.
-// `origin`, when given, receives each product state's tuple of component states.
 // max_bytes (0: none): the product stops with a BudgetExceeded once its estimated size passes it,
-// naming the states explored so far.
+// naming the states explored so far. The parts must be named.
 Fsm product(const std::vector<const Fsm*>& parts, const std::vector<std::string>& names,
-            std::vector<std::vector<StateId>>* origin = nullptr, std::uint64_t max_bytes = 0);
+            std::uint64_t max_bytes = 0);
+// The same product with its states left unnamed (fsm.state_names empty): `names` spells them
+// from their tuples when they are written. It borrows the parts.
+struct Product {
+  Fsm fsm;
+  TupleNames names;
+};
+Product product_with_tuples(const std::vector<const Fsm*>& parts,
+                            const std::vector<std::string>& names, std::uint64_t max_bytes = 0);
 
 bool is_controllable(const Fsm& plant, const Fsm& spec);
 // The supremal controllable nonblocking supervisor of plant for spec.
 Fsm supcon(const Fsm& plant, const Fsm& spec, std::uint64_t max_bytes = 0);
+// The same supervisor with its states left unnamed (spelled by `names` from (plant, spec) pairs;
+// plant and spec are borrowed), and whether spec is controllable for plant: both from one
+// product, for callers that need both or cannot afford a string per state.
+struct Synthesis {
+  Fsm supervisor;
+  TupleNames names;
+  bool spec_controllable = true;
+};
+Synthesis synthesize(const Fsm& plant, const Fsm& spec, std::uint64_t max_bytes = 0);
+
+// The check of swarmcheck::supervisor::check on the compact form.
+swarmcheck::supervisor::CheckReport check(const Fsm& f);
 
 // L(a) in L(b) and Lm(a) in Lm(b), with the spec's shortlex-least witnesses: breadth-first over
 // the accessible pairs (state of a, state of b or none), each pair stored once with its parent

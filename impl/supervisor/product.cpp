@@ -1,7 +1,10 @@
 // The n-ary synchronous product, built on the fly: breadth-first from the initial tuple, so only
 // accessible tuples are ever stored. Tuples live in one flat array and are found again through an
-// open-addressing hash table of ids (no per-state allocation besides the name).
+// open-addressing hash table of ids, and double as the states' names (TupleNames): no per-state
+// allocation at all.
+#include <algorithm>
 #include <map>
+#include <optional>
 
 #include "impl/supervisor/operations.hpp"
 #include "spec/util/demand.hpp"
@@ -63,8 +66,14 @@ class TupleTable {
  public:
   explicit TupleTable(std::size_t k) : k_(k), slots_(1024, kNoState) {}
 
-  std::size_t size() const { return tuples_.size() / k_; }
-  const StateId* tuple(StateId id) const { return tuples_.data() + std::size_t{id} * k_; }
+  std::size_t size() const { return names_.tuples.size() / k_; }
+  const StateId* tuple(StateId id) const { return names_.tuples.data() + std::size_t{id} * k_; }
+  // The tuples as the names of the product's states (valid while the table lives and grows).
+  const TupleNames& names(const std::vector<const Fsm*>& parts) {
+    names_.parts = parts;
+    return names_;
+  }
+  std::vector<StateId> release_tuples() { return std::move(names_.tuples); }
 
   // The id of `t`; a new id (== size() before) when it was not stored yet.
   StateId find_or_insert(const StateId* t) {
@@ -73,16 +82,22 @@ class TupleTable {
     for (;; i = (i + 1) & (slots_.size() - 1)) {
       const StateId id = slots_[i];
       if (id == kNoState) break;
-      if (std::equal(t, t + k_, tuple(id))) return id;
+      if (same(t, tuple(id))) return id;
     }
     const auto id = static_cast<StateId>(size());
     SWARM_DEMAND(id != kNoState);
-    tuples_.insert(tuples_.end(), t, t + k_);
+    names_.tuples.insert(names_.tuples.end(), t, t + k_);
     slots_[i] = id;
     return id;
   }
 
  private:
+  // A plain loop: std::equal becomes a memcmp call, slow for the few ids of a tuple.
+  bool same(const StateId* a, const StateId* b) const {
+    for (std::size_t i = 0; i < k_; ++i)
+      if (a[i] != b[i]) return false;
+    return true;
+  }
   std::size_t hash(const StateId* t) const {
     std::uint64_t h = 0x9e3779b97f4a7c15ull;
     for (std::size_t i = 0; i < k_; ++i) {
@@ -103,15 +118,95 @@ class TupleTable {
   }
 
   std::size_t k_;
-  std::vector<StateId> tuples_;
+  TupleNames names_;            // the tuples, flat, and the parts that name them
   std::vector<StateId> slots_;  // power-of-two size, at most half full
 };
 
-std::string tuple_name(const std::vector<const Fsm*>& parts, const StateId* t) {
-  std::string name = parts[0]->state_names[t[0]];
-  for (std::size_t p = 1; p < parts.size(); ++p) (name += '.') += parts[p]->state_names[t[p]];
-  return name;
-}
+// The events a product state enables, in name order, found from the parts' own transitions
+// (an event is enabled when every part that has it enables it): O(the parts' transitions there)
+// per state instead of O(alphabet), which matters for products of many parts with many events.
+class EnabledEvents {
+ public:
+  EnabledEvents(const std::vector<const Fsm*>& parts, const Alphabet& alphabet)
+      : parts_(parts), global_(parts.size()), owners_(alphabet.owners.size()),
+        stamp_(alphabet.owners.size(), kNoState), hits_(alphabet.owners.size(), 0) {
+    for (EventId e = 0; e < alphabet.owners.size(); ++e) {
+      owners_[e] = static_cast<std::uint32_t>(alphabet.owners[e].size());
+      for (const auto& [p, le] : alphabet.owners[e]) {
+        if (global_[p].size() <= le) global_[p].resize(le + 1);
+        global_[p][le] = e;
+      }
+    }
+  }
+
+  // For the tuple t of product state z (each state asked once, z ascending: z is the stamp).
+  const std::vector<EventId>& at(const StateId* t, StateId z) {
+    found_.clear();
+    for (std::size_t p = 0; p < parts_.size(); ++p) {
+      const Fsm& f = *parts_[p];
+      for (auto i = f.first_edge[t[p]]; i < f.first_edge[t[p] + 1]; ++i) {
+        const EventId e = global_[p][f.edge_event[i]];
+        if (stamp_[e] != z) {
+          stamp_[e] = z;
+          hits_[e] = 0;
+        }
+        if (++hits_[e] == owners_[e]) found_.push_back(e);
+      }
+    }
+    std::sort(found_.begin(), found_.end());
+    return found_;
+  }
+
+ private:
+  const std::vector<const Fsm*>& parts_;
+  std::vector<std::vector<EventId>> global_;  // [part][local event]: the product's event id
+  std::vector<std::uint32_t> owners_;         // [event]: how many parts have it
+  std::vector<StateId> stamp_;                // [event]: the state whose hits_ it holds
+  std::vector<std::uint32_t> hits_;           // [event]: parts that enable it there
+  std::vector<EventId> found_;
+};
+
+// The names of the product states seen so far, kept as 64-bit hashes of their spelling (not as
+// strings): a name that stands for two tuples is found by comparing the spellings only when
+// two hashes are equal.
+class NameCollisions {
+ public:
+  explicit NameCollisions(const TupleNames& names) : names_(names), slots_(1024, kNoState) {}
+
+  // True when state z's name is the name of an earlier state (each state added once, in order).
+  bool repeats_earlier(StateId z) {
+    spelling_.clear();
+    names_.append(z, spelling_);
+    const std::uint64_t h = std::hash<std::string>{}(spelling_);
+    if (2 * (hashes_.size() + 1) > slots_.size()) grow();
+    std::size_t i = h & (slots_.size() - 1);
+    for (; slots_[i] != kNoState; i = (i + 1) & (slots_.size() - 1)) {
+      if (hashes_[slots_[i]] != h) continue;
+      other_.clear();
+      names_.append(slots_[i], other_);
+      if (other_ == spelling_) return true;
+    }
+    slots_[i] = z;
+    hashes_.push_back(h);
+    return false;
+  }
+
+ private:
+  void grow() {
+    slots_.assign(slots_.size() * 2, kNoState);
+    const std::size_t mask = slots_.size() - 1;
+    for (StateId id = 0; id < hashes_.size(); ++id) {
+      std::size_t i = hashes_[id] & mask;
+      while (slots_[i] != kNoState) i = (i + 1) & mask;
+      slots_[i] = id;
+    }
+  }
+
+  const TupleNames& names_;
+  std::vector<std::uint64_t> hashes_;  // [state]
+  std::vector<StateId> slots_;         // power-of-two size, at most half full
+  std::string spelling_, other_;       // reused buffers
+};
 
 std::string joined(const std::vector<std::string>& names) {
   std::string out = names[0];
@@ -121,29 +216,35 @@ std::string joined(const std::vector<std::string>& names) {
 
 }  // namespace
 
-Fsm product(const std::vector<const Fsm*>& parts, const std::vector<std::string>& names,
-            std::vector<std::vector<StateId>>* origin, std::uint64_t max_bytes) {
+Product product_with_tuples(const std::vector<const Fsm*>& parts,
+                            const std::vector<std::string>& names, std::uint64_t max_bytes) {
   SWARM_DEMAND(!parts.empty());
   SWARM_DEMAND(parts.size() == names.size());
   const std::size_t k = parts.size();
   Alphabet alphabet = merge_alphabets(parts, names);
-  Fsm out;
+  Product result;
+  Fsm& out = result.fsm;
+  result.names.parts = parts;
   out.event_names = std::move(alphabet.names);
   out.controllable = std::move(alphabet.controllable);
   out.observable = std::move(alphabet.observable);
   out.first_edge.assign(1, 0);
-  if (origin) origin->clear();
-  for (const Fsm* p : parts)
-    if (p->state_count() == 0) return out;
+  for (const Fsm* p : parts) {
+    SWARM_DEMAND(p->named());
+    if (p->state_count() == 0) return result;
+  }
   // Names can only collide when a component name contains the separator: check only then.
   bool dotted = false;
   for (const Fsm* p : parts)
     for (const auto& s : p->state_names) dotted = dotted || s.find('.') != std::string::npos;
-  std::map<std::string, StateId> seen_names;
 
   TupleTable table(k);
+  EnabledEvents enabled(parts, alphabet);
   std::vector<StateId> cur(k, 0), next(k);
   table.find_or_insert(cur.data());
+  const TupleNames& spelled = table.names(parts);
+  std::optional<NameCollisions> collisions;
+  if (dotted) collisions.emplace(spelled);
   // The estimate: per state its tuple (table and origin), name and flags, and what the caller
   // builds from it (a named Automaton); per transition its event and target, twice.
   const double state_bytes = 160.0 + 24.0 * static_cast<double>(k);
@@ -160,31 +261,29 @@ Fsm product(const std::vector<const Fsm*>& parts, const std::vector<std::string>
     std::copy(table.tuple(z), table.tuple(z) + k, cur.begin());
     bool marked = true;
     for (std::size_t p = 0; p < k; ++p) marked = marked && parts[p]->marked[cur[p]];
-    out.state_names.push_back(tuple_name(parts, cur.data()));
     out.marked.push_back(marked ? 1 : 0);
-    if (dotted && !seen_names.emplace(out.state_names.back(), z).second)
+    if (collisions && collisions->repeats_earlier(z))
       throw InputError(joined(names),
-                       "product state name '" + out.state_names.back() +
+                       "product state name '" + spelled.name(z) +
                            "' stands for two pairs of states; rename states so that no name "
                            "contains '.'");
-    if (origin) origin->emplace_back(cur.begin(), cur.end());
-    for (EventId e = 0; e < out.event_count(); ++e) {
+    for (const EventId e : enabled.at(cur.data(), z)) {
       next = cur;
-      bool possible = true;
-      for (const auto& [p, le] : alphabet.owners[e]) {
-        next[p] = parts[p]->successor(cur[p], le);
-        if (next[p] == kNoState) {
-          possible = false;
-          break;
-        }
-      }
-      if (!possible) continue;
+      for (const auto& [p, le] : alphabet.owners[e]) next[p] = parts[p]->successor(cur[p], le);
       out.edge_event.push_back(e);
       out.edge_target.push_back(table.find_or_insert(next.data()));
     }
     out.first_edge.push_back(static_cast<std::uint32_t>(out.edge_event.size()));
   }
-  return out;
+  result.names.tuples = table.release_tuples();
+  return result;
+}
+
+Fsm product(const std::vector<const Fsm*>& parts, const std::vector<std::string>& names,
+            std::uint64_t max_bytes) {
+  Product p = product_with_tuples(parts, names, max_bytes);
+  store_names(p.fsm, p.names);
+  return std::move(p.fsm);
 }
 
 }  // namespace swarmcheck::impl::supervisor

@@ -2,6 +2,8 @@
 // backward over a reverse CSR built once).
 #include "impl/supervisor/reach.hpp"
 
+#include <algorithm>
+
 #include "impl/supervisor/operations.hpp"
 #include "spec/util/demand.hpp"
 
@@ -52,20 +54,21 @@ std::vector<std::uint8_t> coreachable(const ReverseEdges& r, const std::vector<s
   SWARM_DEMAND(!within || within->size() == n);
   auto inside = [&](StateId s) { return !within || (*within)[s]; };
   std::vector<std::uint8_t> seen(n, 0);
-  std::vector<StateId> stack;
+  // Breadth first (the vector is the FIFO): states found together sit close in a product's
+  // breadth-first numbering, so the walk reads memory in runs rather than at random.
+  std::vector<StateId> queue;
   for (StateId s = 0; s < n; ++s)
     if (seeds[s] && inside(s)) {
       seen[s] = 1;
-      stack.push_back(s);
+      queue.push_back(s);
     }
-  while (!stack.empty()) {
-    const StateId t = stack.back();
-    stack.pop_back();
+  for (std::size_t head = 0; head < queue.size(); ++head) {
+    const StateId t = queue[head];
     for (auto i = r.first[t]; i < r.first[t + 1]; ++i) {
       const StateId s = r.source[i];
       if (!seen[s] && inside(s)) {
         seen[s] = 1;
-        stack.push_back(s);
+        queue.push_back(s);
       }
     }
   }
@@ -95,5 +98,22 @@ std::vector<StateId> blocking_states(const Fsm& f) {
 }
 
 bool is_nonblocking(const Fsm& f) { return blocking_states(f).empty(); }
+
+bool every_state_coaccessible(const Fsm& f) {
+  const auto coac = coaccessible_mask(f);
+  return std::all_of(coac.begin(), coac.end(), [](std::uint8_t c) { return c != 0; });
+}
+
+swarmcheck::supervisor::CheckReport check(const Fsm& f) {
+  const auto ac = accessible_mask(f);
+  const auto coac = coaccessible_mask(f);
+  swarmcheck::supervisor::CheckReport r;
+  for (StateId s = 0; s < f.state_count(); ++s) {
+    if (!ac[s]) r.unreachable_states.push_back(f.state_names[s]);
+    if (ac[s] && !coac[s]) r.blocking_states.push_back(f.state_names[s]);
+    if (!coac[s]) r.coaccessible = false;
+  }
+  return r;
+}
 
 }  // namespace swarmcheck::impl::supervisor

@@ -1,7 +1,8 @@
 // Controllability and the supremal controllable nonblocking supervisor. The fixpoint of the spec
 // (supcon_good + coaccessible within the candidates) is reached incrementally: a removed state
 // removes its uncontrollable predecessors through a worklist, and each coaccessibility pass only
-// walks states still kept. It stops when a pass removes nothing.
+// walks states still kept. It stops when a pass removes nothing. The product's states stay
+// unnamed (pairs of plant and spec states) until a caller spells them.
 #include "impl/supervisor/operations.hpp"
 #include "impl/supervisor/reach.hpp"
 #include "spec/util/demand.hpp"
@@ -10,17 +11,16 @@ namespace swarmcheck::impl::supervisor {
 
 namespace {
 
-struct Synthesis {
-  Fsm p;                                   // plant || spec
+struct Prepared {
+  Product product;                         // plant || spec, unnamed
   std::vector<std::uint8_t> unc_plant;     // [events of p]: uncontrollable and in the plant
   std::vector<std::uint8_t> bad;           // [states of p]: spec disables what plant must do
 };
 
-Synthesis prepare(const Fsm& plant, const Fsm& spec, std::uint64_t max_bytes) {
-  Synthesis s;
-  std::vector<std::vector<StateId>> origin;
-  s.p = product({&plant, &spec}, {"plant", "spec"}, &origin, max_bytes);
-  const Fsm& p = s.p;
+Prepared prepare(const Fsm& plant, const Fsm& spec, std::uint64_t max_bytes) {
+  Prepared s;
+  s.product = product_with_tuples({&plant, &spec}, {"plant", "spec"}, max_bytes);
+  const Fsm& p = s.product.fsm;
   s.unc_plant.assign(p.event_count(), 0);
   std::vector<EventId> in_p(plant.event_count());
   for (EventId e = 0; e < plant.event_count(); ++e) {
@@ -29,7 +29,7 @@ Synthesis prepare(const Fsm& plant, const Fsm& spec, std::uint64_t max_bytes) {
   }
   s.bad.assign(p.state_count(), 0);
   for (StateId z = 0; z < p.state_count(); ++z) {
-    const StateId x = origin[z][0];
+    const StateId x = s.product.names.tuple(z)[0];
     for (auto i = plant.first_edge[x]; i < plant.first_edge[x + 1]; ++i) {
       const EventId e = plant.edge_event[i];
       if (!plant.controllable[e] && p.successor(z, in_p[e]) == kNoState) s.bad[z] = 1;
@@ -38,43 +38,63 @@ Synthesis prepare(const Fsm& plant, const Fsm& spec, std::uint64_t max_bytes) {
   return s;
 }
 
-}  // namespace
-
-bool is_controllable(const Fsm& plant, const Fsm& spec) {
-  const Synthesis s = prepare(plant, spec, 0);
+bool none_bad(const Prepared& s) {
   for (const auto b : s.bad)
     if (b) return false;
   return true;
 }
 
-Fsm supcon(const Fsm& plant, const Fsm& spec, std::uint64_t max_bytes) {
-  const Synthesis s = prepare(plant, spec, max_bytes);
-  const Fsm& p = s.p;
+}  // namespace
+
+bool is_controllable(const Fsm& plant, const Fsm& spec) { return none_bad(prepare(plant, spec, 0)); }
+
+Synthesis synthesize(const Fsm& plant, const Fsm& spec, std::uint64_t max_bytes) {
+  Prepared s = prepare(plant, spec, max_bytes);
+  const Fsm& p = s.product.fsm;
   const StateId n = p.state_count();
-  const ReverseEdges unc = reverse_edges(p, &s.unc_plant);
-  const ReverseEdges all = reverse_edges(p);
   std::vector<std::uint8_t> kept(n, 1);
-  std::vector<StateId> work;
-  auto remove = [&](StateId z) {
-    kept[z] = 0;
-    work.push_back(z);
-  };
-  for (StateId z = 0; z < n; ++z)
-    if (s.bad[z]) remove(z);
-  for (;;) {
-    while (!work.empty()) {  // removal closes over uncontrollable predecessors
-      const StateId z = work.back();
-      work.pop_back();
-      for (auto i = unc.first[z]; i < unc.first[z + 1]; ++i)
-        if (kept[unc.source[i]]) remove(unc.source[i]);
-    }
-    // Coaccessible through kept states only; a kept state that is not must go too.
-    const auto reach = coreachable(all, p.marked, &kept);
+  {
+    const ReverseEdges unc = reverse_edges(p, &s.unc_plant);
+    const ReverseEdges all = reverse_edges(p);
+    std::vector<StateId> work;
+    auto remove = [&](StateId z) {
+      kept[z] = 0;
+      work.push_back(z);
+    };
     for (StateId z = 0; z < n; ++z)
-      if (kept[z] && !reach[z]) remove(z);
-    if (work.empty()) break;
+      if (s.bad[z]) remove(z);
+    for (;;) {
+      while (!work.empty()) {  // removal closes over uncontrollable predecessors
+        const StateId z = work.back();
+        work.pop_back();
+        for (auto i = unc.first[z]; i < unc.first[z + 1]; ++i)
+          if (kept[unc.source[i]]) remove(unc.source[i]);
+      }
+      // Coaccessible through kept states only; a kept state that is not must go too.
+      const auto reach = coreachable(all, p.marked, &kept);
+      for (StateId z = 0; z < n; ++z)
+        if (kept[z] && !reach[z]) remove(z);
+      if (work.empty()) break;
+    }
+  }  // the reverse edges are freed before the result is built
+  Synthesis out;
+  out.spec_controllable = none_bad(s);
+  std::vector<StateId> from_p, from_kept;
+  const Fsm candidates = restrict_states(p, kept, &from_p);
+  out.supervisor = restrict_states(candidates, accessible_mask(candidates), &from_kept);
+  out.names.parts = {&plant, &spec};
+  out.names.tuples.reserve(2 * from_kept.size());
+  for (const StateId k : from_kept) {
+    const StateId* t = s.product.names.tuple(from_p[k]);
+    out.names.tuples.insert(out.names.tuples.end(), t, t + 2);
   }
-  return accessible_part(restrict_states(p, kept));
+  return out;
+}
+
+Fsm supcon(const Fsm& plant, const Fsm& spec, std::uint64_t max_bytes) {
+  Synthesis s = synthesize(plant, spec, max_bytes);
+  store_names(s.supervisor, s.names);
+  return std::move(s.supervisor);
 }
 
 }  // namespace swarmcheck::impl::supervisor
