@@ -65,17 +65,15 @@ int32_t Environment::strips_for(std::size_t robots) const {
 }
 
 // A robot's decision touches only its window (s_range rows either side of its row), and its
-// deposit only the window around its deposit centre, a cell of that window: the decisions of
-// robots whose rows are more than 2 s_range apart never touch the same cell, nor do their
-// deposits when the rows are more than 4 s_range apart. One schedule over the rows robots start
-// the step on, with reach 4 s_range, serves both stages.
+// deposit only the window around its deposit centre: robots whose rows (centres' rows) are more
+// than 2 s_range apart never touch the same cell. (One schedule for both stages, with reach
+// 4 s_range around the rows robots start on, measured no faster: twice the edge robots.)
 int64_t Environment::plan(spec::EnvironmentState& env, LazyGrid& grid) const {
-  deposit_schedule_ready_ = false;
   const int32_t strips = strips_for(env.robots.size());
   if (strips > 1) {
     rows_.resize(env.robots.size());
     for (std::size_t r = 0; r < rows_.size(); ++r) rows_[r] = env.robots[r].cell[0];
-    if (strips_.build(rows_, cfg_.scenario.map_size, 4 * cfg_.scenario.params.s_range, strips) > 1) {
+    if (strips_.build(rows_, cfg_.scenario.map_size, 2 * cfg_.scenario.params.s_range, strips) > 1) {
       for (StripPlanning& p : strip_planning_) p.decisions.clear();
       // The robots' records are written after the stage: threads in step through the robot indices,
       // writing neighbouring records as they went, would fight over their cache lines.
@@ -86,7 +84,6 @@ int64_t Environment::plan(spec::EnvironmentState& env, LazyGrid& grid) const {
       }, [&](int32_t r) { prefetch(env.robots[static_cast<std::size_t>(r)].cell); });
       for (const StripPlanning& p : strip_planning_)
         for (const auto& [r, d] : p.decisions) spec::apply_decision_to_robot(cfg_, env, r, d);
-      deposit_schedule_ready_ = true;
       return newly;
     }
   }
@@ -112,24 +109,15 @@ int64_t Environment::plan_sequential(spec::EnvironmentState& env, LazyGrid& grid
 
 void Environment::deposit(const spec::EnvironmentState& env, LazyGrid& grid) const {
   const std::size_t n = env.deposit_centre.size();
-  const auto deposit_strips = [&] {
-    strips_.run(arena_, no_scratch_, [&](int32_t r, char&) {
-      spec::deposit_around(cfg_, grid, env.deposit_centre[static_cast<std::size_t>(r)], env.tick);
-      return int64_t{0};
-    }, [&](int32_t r) { prefetch(env.deposit_centre[static_cast<std::size_t>(r)]); });
-  };
-  if (deposit_schedule_ready_) {   // this step's planning schedule (reach 4 s_range)
-    deposit_schedule_ready_ = false;
-    strips_.rewind();
-    deposit_strips();
-    return;
-  }
   const int32_t strips = strips_for(n);
-  if (strips > 1) {   // the initial deposits: around the start cells, reach 2 s_range
+  if (strips > 1) {
     rows_.resize(n);
     for (std::size_t r = 0; r < n; ++r) rows_[r] = env.deposit_centre[r][0];
     if (strips_.build(rows_, cfg_.scenario.map_size, 2 * cfg_.scenario.params.s_range, strips) > 1) {
-      deposit_strips();
+      strips_.run(arena_, no_scratch_, [&](int32_t r, char&) {
+        spec::deposit_around(cfg_, grid, env.deposit_centre[static_cast<std::size_t>(r)], env.tick);
+        return int64_t{0};
+      }, [&](int32_t r) { prefetch(env.deposit_centre[static_cast<std::size_t>(r)]); });
       return;
     }
   }

@@ -53,13 +53,12 @@ class Environment {
   // The parallel stages' schedules and per-strip candidates, reused from step to step.
   mutable StripSchedule strips_;
   mutable std::vector<int32_t> rows_;
-  struct StripPlanning {
+  struct alignas(64) StripPlanning {   // a cache line each: every robot writes to its strip's
     std::vector<Candidate> candidates;
     std::vector<std::pair<int32_t, swarmcheck::exploration::RobotDecision>> decisions;   // applied after
   };
   mutable std::vector<StripPlanning> strip_planning_;
   mutable std::vector<char> no_scratch_;
-  mutable bool deposit_schedule_ready_ = false;   // the planning stage's strips serve the deposits
   // Last: its initialisation runs the deposit stage, which uses the members above.
   swarmcheck::exploration::EnvironmentState env_;
 };

@@ -65,14 +65,6 @@ int32_t StripSchedule::build(std::span<const int32_t> rows, int32_t map_rows, in
     Strip& s = strips_[static_cast<std::size_t>(k)];
     s.begin = start[static_cast<std::size_t>(k)];
     s.end = start[static_cast<std::size_t>(k) + 1];
-  }
-  rewind();
-  return count_;
-}
-
-void StripSchedule::rewind() {
-  for (int32_t k = 0; k < count_; ++k) {
-    Strip& s = strips_[static_cast<std::size_t>(k)];
     s.held.store(false, std::memory_order_relaxed);
     s.pos = s.begin;
     s.sum = 0;
@@ -81,6 +73,7 @@ void StripSchedule::rewind() {
       s.next_border[side].store(q < s.end ? members_[static_cast<std::size_t>(q)] : kNone, std::memory_order_relaxed);
     }
   }
+  return count_;
 }
 
 }  // namespace swarmcheck::impl::exploration

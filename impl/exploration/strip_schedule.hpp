@@ -37,9 +37,6 @@ class StripSchedule {
   // Returns the number of strips made (1 means: no parallelism to be had).
   int32_t build(std::span<const int32_t> rows, int32_t map_rows, int32_t reach, int32_t strips);
 
-  // Makes the strips built last ready to run again (the same robots, rows and reach).
-  void rewind();
-
   // Runs work(r, scratch) for every robot, in parallel over the strips in `arena`; the sum of what
   // work returns. `scratch` is a per-strip object of type Scratch, reused across steps. ahead(r)
   // is called a few robots before work(r) in the same strip (to prefetch what work will read).
