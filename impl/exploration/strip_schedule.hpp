@@ -2,18 +2,17 @@
 // Per-robot work of one stage (a decision, or a deposit) in parallel, with exactly the result of
 // doing it robot by robot in index order.
 //
-// Robot r's work touches only cells within `radius` of its cell (Chebyshev), so two robots
-// conflict only when their cells are within reach = 2 * radius in both coordinates. The map's
-// rows are cut into strips of at least reach + 1 rows (balanced by robot count), so robots of
-// strips that are not neighbours never conflict. Each strip runs its robots in index order; a
-// robot that conflicts with a robot of a neighbouring strip (a "border" robot: both are marked)
-// first waits until that neighbour has done every border robot of its facing edge with a smaller
-// index. Any two conflicting robots are therefore done in index order, and operations that do
-// not conflict commute: the result is the index-order one.
+// Robot r's work touches only cells within `radius` rows of its row, so two robots conflict only
+// when their rows are within reach = 2 * radius. The map's rows are cut into strips of at least
+// reach + 1 rows (balanced by robot count), so robots of strips that are not neighbours never
+// conflict. Each strip runs its robots in index order; a robot within reach of a neighbouring
+// strip's edge (a "border" robot) first waits until that neighbour has done every border robot
+// of its own facing edge with a smaller index. Any two conflicting robots are therefore done in
+// index order, which is all the result depends on.
 //
-// Waiting never depends on a thread that is not running: a strip is held by one thread at a
-// time, and a thread that needs a neighbour nobody holds takes it and advances it itself. A wait
-// is always for a smaller robot index, so there is no cycle, and the schedule is correct on any
+// Waiting never blocks on a thread that is not running: a strip is held by one thread at a time,
+// and a thread that needs a neighbour nobody holds takes it and advances it itself. A wait is
+// always for a smaller robot index, so there is no cycle, and the schedule is correct on any
 // number of threads, one included, however the tasks are scheduled.
 //
 // The buffers are reused from step to step: no allocation once the sizes settle.
