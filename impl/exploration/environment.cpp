@@ -71,9 +71,9 @@ int32_t Environment::strips_for(std::size_t robots) const {
 int64_t Environment::plan(spec::EnvironmentState& env, LazyGrid& grid) const {
   const int32_t strips = strips_for(env.robots.size());
   if (strips > 1) {
-    cells_.resize(env.robots.size());
-    for (std::size_t r = 0; r < cells_.size(); ++r) cells_[r] = env.robots[r].cell;
-    if (strips_.build(cells_, cfg_.scenario.map_size, 2 * cfg_.scenario.params.s_range, strips) > 1) {
+    rows_.resize(env.robots.size());
+    for (std::size_t r = 0; r < rows_.size(); ++r) rows_[r] = env.robots[r].cell[0];
+    if (strips_.build(rows_, cfg_.scenario.map_size, 2 * cfg_.scenario.params.s_range, strips) > 1) {
       for (StripPlanning& p : strip_planning_) p.decisions.clear();
       // The robots' records are written after the stage: threads in step through the robot indices,
       // writing neighbouring records as they went, would fight over their cache lines.
@@ -111,7 +111,9 @@ void Environment::deposit(const spec::EnvironmentState& env, LazyGrid& grid) con
   const std::size_t n = env.deposit_centre.size();
   const int32_t strips = strips_for(n);
   if (strips > 1) {
-    if (strips_.build(env.deposit_centre, cfg_.scenario.map_size, 2 * cfg_.scenario.params.s_range, strips) > 1) {
+    rows_.resize(n);
+    for (std::size_t r = 0; r < n; ++r) rows_[r] = env.deposit_centre[r][0];
+    if (strips_.build(rows_, cfg_.scenario.map_size, 2 * cfg_.scenario.params.s_range, strips) > 1) {
       strips_.run(arena_, no_scratch_, [&](int32_t r, char&) {
         spec::deposit_around(cfg_, grid, env.deposit_centre[static_cast<std::size_t>(r)], env.tick);
         return int64_t{0};

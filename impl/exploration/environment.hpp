@@ -52,7 +52,7 @@ class Environment {
   mutable tbb::task_arena arena_;
   // The parallel stages' schedules and per-strip candidates, reused from step to step.
   mutable StripSchedule strips_;
-  mutable std::vector<CellIndex> cells_;   // the robots' cells as the planning stage starts
+  mutable std::vector<int32_t> rows_;
   struct alignas(64) StripPlanning {   // a cache line each: every robot writes to its strip's
     std::vector<Candidate> candidates;
     std::vector<std::pair<int32_t, swarmcheck::exploration::RobotDecision>> decisions;   // applied after

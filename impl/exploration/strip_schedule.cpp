@@ -4,14 +4,12 @@
 
 namespace swarmcheck::impl::exploration {
 
-using swarmcheck::exploration::CellIndex;
-
-int32_t StripSchedule::build(std::span<const CellIndex> cells, int32_t map_rows, int32_t reach, int32_t strips) {
-  const int64_t n = static_cast<int64_t>(cells.size());
+int32_t StripSchedule::build(std::span<const int32_t> rows, int32_t map_rows, int32_t reach, int32_t strips) {
+  const int64_t n = static_cast<int64_t>(rows.size());
   const int64_t min_height = int64_t{reach} + 1;
   // Strip boundaries at robot-count quantiles of the rows, each strip at least min_height rows.
   row_count_.assign(static_cast<std::size_t>(map_rows), 0);
-  for (const CellIndex& c : cells) ++row_count_[static_cast<std::size_t>(c[0])];
+  for (int32_t i : rows) ++row_count_[static_cast<std::size_t>(i)];
   lo_.clear();
   lo_.push_back(0);
   const int64_t per_strip = std::max<int64_t>(1, (n + strips - 1) / std::max(1, strips));
@@ -43,7 +41,7 @@ int32_t StripSchedule::build(std::span<const CellIndex> cells, int32_t map_rows,
   std::vector<int64_t>& fill = fill_;
   fill.assign(start.begin(), start.end() - 1);
   for (int64_t r = 0; r < n; ++r) {
-    const int32_t i = cells[static_cast<std::size_t>(r)][0];
+    const int32_t i = rows[static_cast<std::size_t>(r)];
     const auto k = static_cast<std::size_t>(row_count_[static_cast<std::size_t>(i)]);
     const auto p = static_cast<std::size_t>(fill[k]++);
     members_[p] = static_cast<int32_t>(r);
@@ -52,7 +50,6 @@ int32_t StripSchedule::build(std::span<const CellIndex> cells, int32_t map_rows,
     if (k + 1 < static_cast<std::size_t>(count_) && lo_[k + 1] - 1 - i < reach) b |= 1U << kUpper;   // or above
     border_[p] = b;
   }
-  keep_only_conflicting_edges(cells, reach);
   for (int side : {kLower, kUpper}) {
     auto& next = next_border_pos_[side];
     next.resize(static_cast<std::size_t>(n));
@@ -77,36 +74,6 @@ int32_t StripSchedule::build(std::span<const CellIndex> cells, int32_t map_rows,
     }
   }
   return count_;
-}
-
-// A robot in an edge band waits only if a robot of the neighbour strip's facing band is within
-// reach in both coordinates: most band robots have none, and a wait is a meeting of two threads.
-// Conflicting pairs are marked on both sides, so each pair is still done in index order.
-void StripSchedule::keep_only_conflicting_edges(std::span<const CellIndex> cells, int32_t reach) {
-  for (int32_t k = 0; k + 1 < count_; ++k) {
-    facing_.clear();   // the band of strip k + 1 that faces strip k, by column
-    for (int64_t p = start_[static_cast<std::size_t>(k) + 1]; p < start_[static_cast<std::size_t>(k) + 2]; ++p)
-      if (border_[static_cast<std::size_t>(p)] & (1U << kLower))
-        facing_.push_back({cells[static_cast<std::size_t>(members_[static_cast<std::size_t>(p)])][1], p});
-    std::sort(facing_.begin(), facing_.end());
-    for (int64_t p = start_[static_cast<std::size_t>(k)]; p < start_[static_cast<std::size_t>(k) + 1]; ++p) {
-      uint8_t& mine = border_[static_cast<std::size_t>(p)];
-      if (!(mine & (1U << kUpper))) continue;
-      const CellIndex c = cells[static_cast<std::size_t>(members_[static_cast<std::size_t>(p)])];
-      bool conflicts = false;
-      for (auto it = std::lower_bound(facing_.begin(), facing_.end(), std::pair<int32_t, int64_t>{c[1] - reach, -1});
-           it != facing_.end() && it->first <= c[1] + reach; ++it) {
-        const CellIndex o = cells[static_cast<std::size_t>(members_[static_cast<std::size_t>(it->second)])];
-        if (o[0] - c[0] > reach) continue;
-        conflicts = true;
-        border_[static_cast<std::size_t>(it->second)] |= kConflictLower;
-      }
-      if (conflicts) mine |= kConflictUpper;
-    }
-  }
-  // Only the marked edges stay.
-  for (uint8_t& b : border_)
-    b = static_cast<uint8_t>(((b & kConflictLower) ? (1U << kLower) : 0U) | ((b & kConflictUpper) ? (1U << kUpper) : 0U));
 }
 
 }  // namespace swarmcheck::impl::exploration

@@ -33,11 +33,9 @@ namespace swarmcheck::impl::exploration {
 class StripSchedule {
  public:
   // Cuts the rows [0, map_rows) into at most `strips` strips of at least reach + 1 rows each,
-  // balanced by the number of robots (cells[r] is robot r's cell), and lists each strip's robots.
-  // Robots conflict when their cells are within `reach` in both coordinates.
+  // balanced by the number of robots (rows[r] is robot r's row), and lists each strip's robots.
   // Returns the number of strips made (1 means: no parallelism to be had).
-  int32_t build(std::span<const swarmcheck::exploration::CellIndex> cells, int32_t map_rows, int32_t reach,
-                int32_t strips);
+  int32_t build(std::span<const int32_t> rows, int32_t map_rows, int32_t reach, int32_t strips);
 
   // Runs work(r, scratch) for every robot, in parallel over the strips in `arena`; the sum of what
   // work returns. `scratch` is a per-strip object of type Scratch, reused across steps. ahead(r)
@@ -48,7 +46,6 @@ class StripSchedule {
  private:
   static constexpr int32_t kNone = INT32_MAX;
   enum Side : int { kLower = 0, kUpper = 1 };
-  static constexpr uint8_t kConflictLower = 1U << 2, kConflictUpper = 1U << 3;   // while building
 
   struct alignas(64) Strip {   // a cache line each: strips are written by different threads
     std::atomic<bool> held{false};
@@ -94,8 +91,6 @@ class StripSchedule {
   template <class Scratch, class Work, class Ahead>
   void wait_for(int32_t k, Side edge, int32_t index, std::vector<Scratch>& scratch, Work& work, Ahead& ahead);
 
-  void keep_only_conflicting_edges(std::span<const swarmcheck::exploration::CellIndex> cells, int32_t reach);
-
   int32_t count_ = 0;
   std::unique_ptr<Strip[]> strips_;
   int32_t capacity_ = 0;
@@ -104,7 +99,6 @@ class StripSchedule {
   std::vector<uint8_t> border_;           // per position: bit kLower, bit kUpper
   std::vector<int64_t> next_border_pos_[2];   // per position: the strip's next border position, or end
   std::vector<int64_t> start_, fill_;         // each strip's first position; the filling cursor
-  std::vector<std::pair<int32_t, int64_t>> facing_;   // (column, position) of a facing band
 };
 
 // Does strip k's next robot, after its neighbours have done their earlier border robots.
