@@ -23,6 +23,10 @@ int main(int argc, char** argv) {
       "request refused (a budget, an output that is an input); 3 internal error (a bug: please "
       "report it); 130 / 143 interrupted by SIGINT / SIGTERM (outputs left as they were).");
   app.set_version_flag("--version", "swarmcheck 0.1.0");
+  // Usage errors read like every other error: one line, the same prefix.
+  app.failure_message([](const CLI::App*, const CLI::Error& e) {
+    return std::string("swarmcheck: error: ") + e.what() + "\nRun with --help for more information.\n";
+  });
   int exit_code = 0;
   swarmcheck::cli::add_run_verb(app, exit_code);
   swarmcheck::cli::add_conform_verb(app, exit_code);

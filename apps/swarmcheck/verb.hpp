@@ -48,9 +48,18 @@ inline std::string printable_message(const std::string& text) {
 // --threads N (0: every core), defaulting to the SWARMCHECK_THREADS environment variable. The
 // results never depend on it; only the time does.
 inline CLI::Option* add_threads_option(CLI::App* cmd, int32_t& threads, const std::string& what) {
+  const CLI::Validator count(
+      [](std::string& text) -> std::string {
+        int32_t v = -1;
+        const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+        if (ec == std::errc() && end == text.data() + text.size() && v >= 0 && v <= (1 << 16)) return "";
+        return "expected an integer in [0, 65536] (from --threads or SWARMCHECK_THREADS), got '" +
+               printable_message(text) + "'";
+      },
+      "INT in [0, 65536]");
   return cmd->add_option("--threads", threads, what + " (0: every core)")
       ->envname("SWARMCHECK_THREADS")
-      ->check(CLI::Range(0, 1 << 16))
+      ->check(count)
       ->capture_default_str();
 }
 

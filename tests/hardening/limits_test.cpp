@@ -173,9 +173,9 @@ TEST(Limits, AMapThatCannotFitIsRefusedBeforeAnythingIsAllocated) {
   const std::string small = write(d / "small.json", R"({"map_size": 1024, "robots": [[0.5, 0.5]]})");
   expect_one_error_line(run_binary(kBin, "run " + small + " --memory-limit 1M"), "over the limit of 1.0 MiB");
   EXPECT_EQ(run_binary(kBin, "run --steps 1 --memory-limit 1M").status, 1);   // the default 10 x 10 fits
-  const auto bad = run_binary(kBin, "run --memory-limit 12Q");   // a usage error, as CLI11 prints them
+  const auto bad = run_binary(kBin, "run --memory-limit 12Q");   // a usage error, with the usual prefix
   EXPECT_EQ(bad.status, 2);
-  EXPECT_EQ(bad.out.rfind("--memory-limit: expected a size such as 8G, 512M, 1.5T or a number of bytes (0: no limit), got \"12Q\"", 0), 0U) << bad.out;
+  EXPECT_EQ(bad.out.rfind("swarmcheck: error: --memory-limit: expected a size such as 8G, 512M, 1.5T or a number of bytes (0: no limit), got \"12Q\"", 0), 0U) << bad.out;
 }
 
 TEST(Limits, AProductOverTheMemoryLimitStopsCleanlyWithTheStatesExplored) {
