@@ -4,6 +4,7 @@
 #include "apps/swarmcheck/conform_verb.hpp"
 #include "apps/swarmcheck/dse_verb.hpp"
 #include "apps/swarmcheck/edit_verb.hpp"
+#include "apps/swarmcheck/fmu_verb.hpp"
 #include "apps/swarmcheck/fsm_verb.hpp"
 #include "apps/swarmcheck/mission_verb.hpp"
 #include "apps/swarmcheck/prove_verb.hpp"
@@ -38,6 +39,8 @@ int main(int argc, char** argv) {
   swarmcheck::cli::add_view_verb(app, exit_code);
   swarmcheck::cli::add_edit_verb(app, exit_code);
   swarmcheck::cli::add_serve_verb(app, exit_code);
+  swarmcheck::cli::add_fmu_verb(app, exit_code);
+  swarmcheck::cli::add_cosim_verb(app, exit_code);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -25,7 +25,7 @@ namespace {
 using namespace swarmcheck::exploration;
 namespace cx = swarmcheck::conformance::exploration;
 
-struct RunOptions {
+struct ExplorationRunOptions {
   std::string scenario_path;   // empty: the built-in default
   std::string mode, rule;      // empty: as in the scenario
   std::optional<uint64_t> seed;
@@ -48,7 +48,7 @@ struct RunEnd {
   std::string stall_reason;
 };
 
-Scenario resolve_scenario(const RunOptions& o) {
+Scenario resolve_scenario(const ExplorationRunOptions& o) {
   Scenario s = o.scenario_path.empty() ? default_scenario() : load_scenario(o.scenario_path);
   const std::string where = o.scenario_path.empty() ? "default scenario" : o.scenario_path;
   if (!o.mode.empty()) s.mode = json_io::enum_from_string<Mode>(o.mode, "--mode");
@@ -83,7 +83,7 @@ class Progress {
   std::chrono::steady_clock::time_point last_;
 };
 
-void print_summary(const Scenario& s, const RunOptions& o, const cx::Simulation& sim, const RunEnd& end) {
+void print_summary(const Scenario& s, const ExplorationRunOptions& o, const cx::Simulation& sim, const RunEnd& end) {
   const int64_t reachable = end.reach.reachable_free_cells;
   const double eP_reachable = reachable > 0 ? exploration_percent(sim.visited(), reachable) : 100.0;
   if (o.json) {
@@ -123,7 +123,7 @@ void print_summary(const Scenario& s, const RunOptions& o, const cx::Simulation&
 
 // The trace's size, estimated from the first record before anything is written: the records
 // (every trace_every steps, at most max_steps) and the field records of --trace-field.
-double estimated_trace_bytes(const Scenario& s, const RunOptions& o, std::size_t first_record_bytes) {
+double estimated_trace_bytes(const Scenario& s, const ExplorationRunOptions& o, std::size_t first_record_bytes) {
   const double records = static_cast<double>(s.max_steps) / static_cast<double>(o.trace_every) + 2.0;
   double bytes = records * static_cast<double>(first_record_bytes + 1);
   if (o.trace_field > 0) {
@@ -135,7 +135,7 @@ double estimated_trace_bytes(const Scenario& s, const RunOptions& o, std::size_t
 
 // Runs either engine (the library, or the reference model through the harness). Status 0 when
 // the run completed, 1 when it stopped at max_steps or stalled.
-int run_with(conformance::exploration::Simulation& sim, const Scenario& s, const RunOptions& o, RunEnd end) {
+int run_with(conformance::exploration::Simulation& sim, const Scenario& s, const ExplorationRunOptions& o, RunEnd end) {
   if (!o.trace_path.empty())
     require_within("--trace " + o.trace_path, "the trace (" + std::to_string(s.max_steps) + " steps at most)",
                    estimated_trace_bytes(s, o, trace_line(sim.record()).size()), o.budgets.trace_bytes,
@@ -177,7 +177,7 @@ int run_with(conformance::exploration::Simulation& sim, const Scenario& s, const
   return sim.completion_step() ? 0 : 1;
 }
 
-int run(const RunOptions& o) {
+int run(const ExplorationRunOptions& o) {
   if (o.trace_every < 1) throw InputError("--trace-every", "expected an integer >= 1");
   if (o.trace_field < 0) throw InputError("--trace-field", "expected an integer >= 1");
   if (o.trace_field > 0 && o.trace_path.empty()) throw InputError("--trace-field", "needs --trace FILE");
@@ -207,7 +207,7 @@ int run(const RunOptions& o) {
 }  // namespace
 
 void add_run_verb(CLI::App& app, int& exit_code) {
-  auto opts = std::make_shared<RunOptions>();
+  auto opts = std::make_shared<ExplorationRunOptions>();
   CLI::App* cmd = app.add_subcommand(
       "run", "Run one exploration (the built-in thesis set-up when no file is given)");
   cmd->add_option("scenario", opts->scenario_path, "Scenario file (JSON); see README");

@@ -49,6 +49,7 @@ spec::Cell Environment::cell(CellIndex c) const {
 }
 
 void Environment::step(bool all_arrived) { spec::environment_step(cfg_, env_, grid_, all_arrived, Stages{this}); }
+void Environment::step_planned(bool planning) { spec::environment_stages(cfg_, env_, grid_, planning, Stages{this}); }
 
 int32_t Environment::strips_for(std::size_t robots) const {
   if (threads_ <= 1 || robots < 2) return 1;

@@ -23,6 +23,8 @@ class Environment {
   Environment& operator=(const Environment&) = delete;
 
   void step(bool all_arrived);
+  // A step whose planning another protocol decided (the handshake state is left as it is).
+  void step_planned(bool planning);
 
   const swarmcheck::exploration::EnvironmentConfig& config() const { return cfg_; }
   const swarmcheck::exploration::Scenario& scenario() const { return cfg_.scenario; }

@@ -58,6 +58,27 @@ typename D::Bool arrived_rule(const DeltaT<D>& d, const typename D::Real& tolera
 }
 
 template <class D>
+DriveT<D> drive_rule(const ControllerParamsT<D>& p, const ControllerCoreT<D>& s, const ControllerInputsT<D>& in,
+                     const DeltaT<D>& d) {
+  using Real = typename D::Real;
+  using Bool = typename D::Bool;
+  // Maneuver 1 applies the atan2 fix; the deltas it leaves are the ones maneuver 2 drives on.
+  const DeltaT<D> fixed = atan2_fix_rule<D>(d, p.tolerance_m);
+  const DeltaT<D> used{num::select(s.driving, d.dx, fixed.dx), num::select(s.driving, d.dy, fixed.dy)};
+  const Real beta = bearing_error_rule<D>(used, in.theta_rad);
+  const Bool driving = num::select(s.driving, !(num::abs(beta) > p.reorient_rad),
+                                   num::abs(beta) < p.orient_tolerance_rad);
+  const Real rho = num::sqrt(used.dx * used.dx + used.dy * used.dy);
+  const Real v = num::select(driving, rho * p.k_v * (rho * rho * num::cos(beta) + beta * num::sin(beta)),
+                             Real(0.0));
+  const Real w = -p.k_beta * beta;
+  const ServoPairT<D> mix = servo_mix_rule<D>(p, v, w);
+  return DriveT<D>{ControllerCoreT<D>{Bool(false), driving, beta, saturate_servo_rule<D>(mix.left),
+                                      saturate_servo_rule<D>(mix.right)},
+                   rho, v, w};
+}
+
+template <class D>
 ControllerCoreT<D> controller_rule(const ControllerParamsT<D>& p, const ControllerCoreT<D>& s,
                                    const ControllerInputsT<D>& in) {
   using Real = typename D::Real;
@@ -71,21 +92,7 @@ ControllerCoreT<D> controller_rule(const ControllerParamsT<D>& p, const Controll
   const auto busy_step = [&] {
     const DeltaT<D> d{in.x_desired_m - in.x_m, in.y_desired_m - in.y_m};
     const auto arrived = [&] { return ControllerCoreT<D>{Bool(true), Bool(false), s.beta_rad, Real(0.0), Real(0.0)}; };
-    const auto drive = [&] {
-      // Maneuver 1 applies the atan2 fix; the deltas it leaves are the ones maneuver 2 drives on.
-      const DeltaT<D> fixed = atan2_fix_rule<D>(d, p.tolerance_m);
-      const DeltaT<D> used{num::select(s.driving, d.dx, fixed.dx), num::select(s.driving, d.dy, fixed.dy)};
-      const Real beta = bearing_error_rule<D>(used, in.theta_rad);
-      const Bool driving = num::select(s.driving, !(num::abs(beta) > p.reorient_rad),
-                                       num::abs(beta) < p.orient_tolerance_rad);
-      const Real rho = num::sqrt(used.dx * used.dx + used.dy * used.dy);
-      const Real v = num::select(driving, rho * p.k_v * (rho * rho * num::cos(beta) + beta * num::sin(beta)),
-                                 Real(0.0));
-      const Real w = -p.k_beta * beta;
-      const ServoPairT<D> mix = servo_mix_rule<D>(p, v, w);
-      return ControllerCoreT<D>{Bool(false), driving, beta, saturate_servo_rule<D>(mix.left),
-                                saturate_servo_rule<D>(mix.right)};
-    };
+    const auto drive = [&] { return drive_rule<D>(p, s, in, d).next; };
     return num::branch(arrived_rule<D>(d, p.tolerance_m), arrived, drive);
   };
   return num::branch(s.idle, idle_step, busy_step);
@@ -99,7 +106,9 @@ ControllerCoreT<D> controller_rule(const ControllerParamsT<D>& p, const Controll
   template D::Real bearing_error_rule<D>(const DeltaT<D>&, const D::Real&);                                 \
   template D::Bool arrived_rule<D>(const DeltaT<D>&, const D::Real&);                                       \
   template ControllerCoreT<D> controller_rule<D>(const ControllerParamsT<D>&, const ControllerCoreT<D>&,   \
-                                                 const ControllerInputsT<D>&);
+                                                 const ControllerInputsT<D>&);                              \
+  template DriveT<D> drive_rule<D>(const ControllerParamsT<D>&, const ControllerCoreT<D>&,                 \
+                                   const ControllerInputsT<D>&, const DeltaT<D>&);
 SWARMCHECK_CONTROLLER_RULES(num::Concrete)
 SWARMCHECK_CONTROLLER_RULES(num::Symbolic)
 #undef SWARMCHECK_CONTROLLER_RULES
@@ -136,6 +145,19 @@ ControllerState controller_step(const RobotParams& rp, const ControllerState& s,
   out.servo_left = n.servo_left;
   out.servo_right = n.servo_right;
   return out;
+}
+
+ControllerLocals controller_locals(const RobotParams& rp, const ControllerState& s, const ControllerInputs& in) {
+  using C = num::Concrete;
+  if (s.on_destination_output == 1) return {};
+  const DeltaT<C> d{in.waypoint[0] - in.pose.x_m, in.waypoint[1] - in.pose.y_m};
+  if (arrived_rule<C>(d, rp.tolerance_m)) return {};
+  const ControllerCoreT<C> core{false, s.maneuver == 2, s.beta_rad, s.servo_left, s.servo_right};
+  const DriveT<C> r = drive_rule<C>(controller_params(rp), core,
+                                    {in.pose.x_m, in.pose.y_m, in.pose.theta_rad, in.waypoint[0], in.waypoint[1],
+                                     in.on_destination_input == 1},
+                                    d);
+  return {r.rho_m, r.v, r.w};
 }
 
 }  // namespace swarmcheck::exploration

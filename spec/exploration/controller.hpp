@@ -76,6 +76,16 @@ typename D::Real bearing_error_rule(const DeltaT<D>& d, const typename D::Real& 
 // Arrival: |dx| + |dy| < tolerance.
 template <class D>
 typename D::Bool arrived_rule(const DeltaT<D>& d, const typename D::Real& tolerance_m);
+// Maneuvers 1 and 2 of a busy controller that has not arrived: the next core, with the distance
+// rho, linear command v and turn command w it computed on the way (the FMU shows them).
+template <class D>
+struct DriveT {
+  ControllerCoreT<D> next;
+  typename D::Real rho_m, v, w;
+};
+template <class D>
+DriveT<D> drive_rule(const ControllerParamsT<D>& p, const ControllerCoreT<D>& s, const ControllerInputsT<D>& in,
+                     const DeltaT<D>& d);
 // One controller step (the whole of controller_step, on booleans).
 template <class D>
 ControllerCoreT<D> controller_rule(const ControllerParamsT<D>& p, const ControllerCoreT<D>& s,
@@ -117,5 +127,12 @@ double thesis_clamp(double u);
 
 ControllerState controller_step(const RobotParams& rp, const ControllerState& s,
                                 const ControllerInputs& in);
+
+// What controller_step(rp, s, in) computed on the way: rho (m), v and w of drive_rule; all 0 when
+// the step was idle or an arrival (the thesis Controller FMU's local variables).
+struct ControllerLocals {
+  double rho_m = 0, v = 0, w = 0;
+};
+ControllerLocals controller_locals(const RobotParams& rp, const ControllerState& s, const ControllerInputs& in);
 
 }  // namespace swarmcheck::exploration

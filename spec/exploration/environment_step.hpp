@@ -197,6 +197,21 @@ EnvironmentState initial_environment(const EnvironmentConfig& cfg, G& grid, cons
   return env;
 }
 
+// Stages 2 to 5 of a step, whether it plans given (the handshake's verdict, or another protocol's:
+// the FMI Environment's epoch handshake decides it from its own inputs).
+template <EnvironmentGrid G, class Stages = IndexOrder>
+void environment_stages(const EnvironmentConfig& cfg, EnvironmentState& env, G& grid, bool planning,
+                        const Stages& stages = Stages{}) {
+  if (planning) env.progress.visited += stages.plan(cfg, env, grid);
+  ++env.tick;
+  grid.evaporate(env.tick);
+  if (planning) {
+    stages.deposit(cfg, env, grid);
+    ++env.planning_steps;
+  }
+  update_progress(env.progress, env.tick, cfg.scenario.params.step_size);
+}
+
 // One Environment step (the stages above). all_arrived is ignored in abstract mode.
 template <EnvironmentGrid G, class Stages = IndexOrder>
 void environment_step(const EnvironmentConfig& cfg, EnvironmentState& env, G& grid, bool all_arrived,
@@ -207,14 +222,7 @@ void environment_step(const EnvironmentConfig& cfg, EnvironmentState& env, G& gr
     planning = hs.plan;
     env.handshake = hs.next;
   }
-  if (planning) env.progress.visited += stages.plan(cfg, env, grid);
-  ++env.tick;
-  grid.evaporate(env.tick);
-  if (planning) {
-    stages.deposit(cfg, env, grid);
-    ++env.planning_steps;
-  }
-  update_progress(env.progress, env.tick, cfg.scenario.params.step_size);
+  environment_stages(cfg, env, grid, planning, stages);
 }
 
 // FNV-1a over the bits of every cell's pheromone at tick, raster order.

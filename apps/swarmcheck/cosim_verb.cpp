@@ -1,0 +1,119 @@
+// swarmcheck cosim: runs an INTO-CPS multi-model with swarmcheck's fixed-step master
+// (fmi/master/master.hpp) and writes INTO-CPS-style outputs.csv; on swarmcheck's own FMUs it
+// also watches the onDestination handshake (fmi/master/handshake_monitor.hpp).
+#include <fmt/core.h>
+#include <fmt/ostream.h>
+
+#include <memory>
+
+#include "apps/swarmcheck/fmu_verb.hpp"
+#include "apps/swarmcheck/verb.hpp"
+#include "fmi/master/handshake_monitor.hpp"
+#include "fmi/master/master.hpp"
+#include "impl/io/atomic_file.hpp"
+#include "spec/util/hana_json.hpp"
+
+namespace swarmcheck::cli {
+namespace {
+
+struct CosimOptions {
+  std::string multimodel;
+  std::string config;
+  std::string algorithm = "jacobi";
+  std::string output;
+  bool json = false;
+};
+
+void write_row(std::ostream& out, double t, const std::vector<double>& values) {
+  fmt::print(out, "{}", t);
+  for (const double v : values) fmt::print(out, ",{}", v);
+  out << '\n';
+}
+
+int cosim(const CosimOptions& o) {
+  namespace fm = swarmcheck::fmi::master;
+  const fm::MultiModel mm = fm::read_multimodel(o.multimodel);
+  const fm::CoSimConfig config = fm::read_config(o.config);
+  std::vector<std::string> inputs{o.multimodel, o.config};
+  for (const auto& [key, file] : mm.fmus) inputs.push_back(file);
+  io::refuse_output_that_is_an_input(o.output, inputs);
+  fm::Master master(mm, config, o.algorithm == "gauss-seidel" ? fm::Algorithm::gauss_seidel : fm::Algorithm::jacobi);
+  fm::HandshakeMonitor monitor(master);
+  std::unique_ptr<io::AtomicFile> csv;
+  std::vector<double> values;
+  if (!o.output.empty()) {
+    csv = std::make_unique<io::AtomicFile>(o.output);
+    csv->stream() << "time";
+    for (const std::string& name : master.output_names()) csv->stream() << ',' << name;
+    csv->stream() << '\n';
+    master.output_values(values);
+    write_row(csv->stream(), master.time_s(), values);
+  }
+  // eP of a swarmcheck Environment, for the summary.
+  std::optional<fm::Master::Port> eP;
+  for (const std::string& in : master.instance_names())
+    if (master.model_name_of(in) == "swarmcheck Environment") eP = master.port(in + ".eP");
+  std::optional<int64_t> complete_at;
+  while (!master.done()) {
+    master.step();
+    monitor.after_step(master);
+    if (eP && !complete_at && master.value(*eP) >= 100) complete_at = master.steps();
+    if (csv) {
+      master.output_values(values);
+      write_row(csv->stream(), master.time_s(), values);
+    }
+  }
+  if (csv) csv->commit();
+  const bool violated = monitor.active() && monitor.stale_count() > 0;
+  if (o.json) {
+    json_io::Json j;
+    j["multimodel"] = o.multimodel;
+    j["algorithm"] = o.algorithm;
+    j["instances"] = master.instance_names().size();
+    j["steps"] = master.steps();
+    j["end_time_s"] = master.time_s();
+    if (eP) {
+      j["eP"] = master.value(*eP);
+      j["completion_step"] = complete_at ? json_io::Json(*complete_at) : json_io::Json(nullptr);
+    }
+    if (monitor.active()) {
+      j["handshake"] = violated ? "violated" : "held";
+      j["stale_acceptances"] = monitor.stale_count();
+    }
+    fmt::print("{}\n", json_io::dump_text(j));
+  } else {
+    fmt::print("cosim {}: {} instances, {} steps of {} s ({}), t = {} s\n", o.multimodel, master.instance_names().size(),
+               master.steps(), config.step_s, o.algorithm, master.time_s());
+    if (eP)
+      fmt::print("eP {:.1f} %{}\n", master.value(*eP),
+                 complete_at ? fmt::format(", complete at step {}", *complete_at) : std::string(", not complete"));
+    if (monitor.active() && !violated) fmt::print("handshake held: every acceptance was of a fresh waypoint\n");
+    if (violated) {
+      const auto& first = monitor.stale().front();
+      fmt::print("handshake VIOLATED (fresh-acceptance): {} stale acceptances; first: {} accepted its waypoint #{} at "
+                 "step {} (t = {} s) with only {} plans made (see `swarmcheck prove`, handshake-gauss-seidel)\n",
+                 monitor.stale_count(), first.controller, first.accepted, first.step, first.time_s, first.plans);
+    }
+    if (csv) fmt::print("wrote {} ({} columns)\n", o.output, master.output_names().size() + 1);
+  }
+  return violated ? 1 : 0;
+}
+
+}  // namespace
+
+void add_cosim_verb(CLI::App& app, int& exit_code) {
+  auto opts = std::make_shared<CosimOptions>();
+  CLI::App* cmd = app.add_subcommand("cosim", "Run an INTO-CPS multi-model of FMI 2.0 FMUs (fixed step)");
+  cmd->add_option("multimodel", opts->multimodel, "The multi-model (JSON: fmus, connections, parameters)")->required();
+  cmd->add_option("--config", opts->config,
+                  "Co-simulation configuration (JSON: startTime, endTime, algorithm {type fixed-step, size}); "
+                  "default 0 to 10 s by 0.1 s");
+  cmd->add_option("--algorithm", opts->algorithm, "jacobi (every input from the outputs of the step before) | gauss-seidel")
+      ->check(CLI::IsMember({"jacobi", "gauss-seidel"}))
+      ->capture_default_str();
+  cmd->add_option("-o,--output", opts->output, "Write INTO-CPS-style outputs.csv (time, then every output)");
+  cmd->add_flag("--json", opts->json, "Print the summary as one JSON object");
+  cmd->callback([opts, &exit_code] { exit_code = guarded([&] { return cosim(*opts); }); });
+}
+
+}  // namespace swarmcheck::cli

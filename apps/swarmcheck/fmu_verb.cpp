@@ -1,0 +1,76 @@
+// swarmcheck fmu export: FMI 2.0 co-simulation FMUs of the Environment, the Controller and the
+// Body, or the thesis's architecture as an INTO-CPS multi-model (fmi/export/fmu_export.hpp).
+#include "apps/swarmcheck/fmu_verb.hpp"
+
+#include <fmt/core.h>
+
+#include <memory>
+#include <optional>
+
+#include "apps/swarmcheck/verb.hpp"
+#include "fmi/export/fmu_export.hpp"
+#include "spec/exploration/scenario.hpp"
+
+namespace swarmcheck::cli {
+namespace {
+
+struct FmuExportOptions {
+  std::string kind;
+  std::optional<int32_t> robots;
+  std::string scenario_path;
+  std::string output;
+  std::string intocps;
+  std::string handshake = "flag";
+};
+
+int fmu_export(const FmuExportOptions& o) {
+  namespace ex = swarmcheck::exploration;
+  if (o.intocps.empty() == o.kind.empty())
+    throw InputError("fmu export", "give a kind (environment, controller or body) with -o FILE.fmu, or --intocps DIR");
+  if (!o.kind.empty() && o.output.empty()) throw InputError("fmu export", "-o FILE.fmu is required with a kind");
+  if (!o.intocps.empty() && !o.output.empty()) throw InputError("fmu export", "-o goes with a kind; --intocps writes its own files");
+  ex::Scenario s = o.scenario_path.empty() ? ex::default_scenario() : ex::load_scenario(o.scenario_path);
+  if (o.robots) s = fmi::scenario_with_robots(s, *o.robots);
+  if (!o.intocps.empty()) {
+    fmi::write_intocps(s, o.handshake == "epoch" ? fmi::Handshake::epoch : fmi::Handshake::flag, o.intocps);
+    fmt::print("wrote {}/: Environment.fmu, Controller.fmu, Body.fmu, multimodel.json, coe.json ({} robots, {} handshake)\n",
+               o.intocps, s.robots.size(), o.handshake);
+    fmt::print("run it: swarmcheck cosim {}/multimodel.json --config {}/coe.json -o outputs.csv\n", o.intocps, o.intocps);
+    return 0;
+  }
+  const fmi::Kind kind = o.kind == "environment" ? fmi::Kind::environment
+                         : o.kind == "controller" ? fmi::Kind::controller
+                                                  : fmi::Kind::body;
+  io::refuse_output_that_is_an_input(o.output, {o.scenario_path});
+  fmi::write_fmu(fmi::fmu_setup(kind, s), o.output);
+  fmt::print("wrote {} ({}, FMI 2.0 co-simulation{})\n", o.output, fmi::model_identifier(kind),
+             kind == fmi::Kind::environment ? fmt::format(", {} robots, {} obstacle cells", s.robots.size(), s.obstacles.size())
+                                            : std::string());
+  return 0;
+}
+
+}  // namespace
+
+void add_fmu_verb(CLI::App& app, int& exit_code) {
+  CLI::App* fmu = app.add_subcommand("fmu", "FMI 2.0 co-simulation FMUs of the exploration system");
+  fmu->require_subcommand(1);
+  auto opts = std::make_shared<FmuExportOptions>();
+  CLI::App* cmd = fmu->add_subcommand(
+      "export", "write an FMU (environment, controller or body), or the thesis multi-model with --intocps DIR");
+  cmd->add_option("kind", opts->kind, "environment | controller | body")
+      ->check(CLI::IsMember({"environment", "controller", "body"}));
+  cmd->add_option("-o,--output", opts->output, "The .fmu file to write");
+  cmd->add_option("--scenario", opts->scenario_path,
+                  "Scenario file whose values are the parameters' start values (default: the built-in one)");
+  cmd->add_option("--robots", opts->robots,
+                  "Robots N (the Environment's variables are generated for N); the scenario's own robots when it "
+                  "has N, else N spread over its free cells");
+  cmd->add_option("--intocps", opts->intocps,
+                  "Write Environment.fmu, Controller.fmu, Body.fmu, multimodel.json and coe.json into DIR");
+  cmd->add_option("--handshake", opts->handshake, "flag (the thesis's) | epoch, for --intocps")
+      ->check(CLI::IsMember({"flag", "epoch"}))
+      ->capture_default_str();
+  cmd->callback([opts, &exit_code] { exit_code = guarded([&] { return fmu_export(*opts); }); });
+}
+
+}  // namespace swarmcheck::cli

@@ -1,0 +1,38 @@
+#pragma once
+// `swarmcheck fmu export`: FMI 2.0 co-simulation FMUs (zip archives) of the Environment, the
+// Controller and the Body, and the thesis's architecture as an INTO-CPS multi-model.
+//   X.fmu = modelDescription.xml
+//           binaries/linux64/swarmcheck_<kind>.so   the fmi2 library (built into swarmcheck)
+//           resources/swarmcheck-fmu.json            kind, robot and obstacle counts, scenario
+// Archives are byte-identical for the same request (fixed timestamps, fixed order).
+#include <cstdint>
+#include <string>
+
+#include "fmi/fmu/component.hpp"
+#include "spec/exploration/types.hpp"
+
+namespace swarmcheck::fmi {
+
+// The scenario with n robots: its own when it has n, otherwise n robots spread over its free
+// cells in raster order (cell floor(k F / n) of the F free cells, k = 0..n-1), at cell centres.
+// InputError when n < 1 or n > F.
+exploration::Scenario scenario_with_robots(const exploration::Scenario& s, int32_t n);
+
+// The setup of an FMU of `kind` for scenario s (the Environment's robots and obstacles are s's).
+FmuSetup fmu_setup(Kind kind, const exploration::Scenario& s);
+
+// The bytes of the .fmu archive.
+std::string fmu_archive(const FmuSetup& setup);
+
+// Writes the archive to `path` atomically.
+void write_fmu(const FmuSetup& setup, const std::string& path);
+
+enum class Handshake { flag, epoch };
+
+// The thesis's architecture in `dir` (created if missing): Environment.fmu, Controller.fmu,
+// Body.fmu, multimodel.json (one Environment, one Controller and one Body instance per robot,
+// connected as the thesis's FMUs are) and coe.json (fixed step = step_size; end time = the
+// scenario's completion time as the library computes it, or max_steps when it does not complete).
+void write_intocps(const exploration::Scenario& s, Handshake handshake, const std::string& dir);
+
+}  // namespace swarmcheck::fmi

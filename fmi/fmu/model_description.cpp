@@ -1,0 +1,86 @@
+#include "fmi/fmu/model_description.hpp"
+
+#include <fmt/format.h>
+
+#include <memory>
+
+namespace swarmcheck::fmi {
+namespace {
+
+std::string xml_escape(const std::string& s) {
+  std::string out;
+  for (const char c : s) {
+    switch (c) {
+      case '&': out += "&amp;"; break;
+      case '<': out += "&lt;"; break;
+      case '>': out += "&gt;"; break;
+      case '"': out += "&quot;"; break;
+      default: out += c;
+    }
+  }
+  return out;
+}
+
+const char* description_of(Kind k) {
+  switch (k) {
+    case Kind::environment:
+      return "Stigmergic exploration Environment: grid map, repulsive pheromone, exploration percentage "
+             "(swarmcheck spec/exploration/environment_step.hpp)";
+    case Kind::controller:
+      return "Two-phase unicycle point-to-point controller with the atan2 fix and servo saturation "
+             "(swarmcheck spec/exploration/controller.hpp)";
+    case Kind::body:
+      return "Differential-drive body, the INTO-CPS line follower Body_Block's steady state "
+             "(swarmcheck spec/exploration/body.hpp)";
+  }
+  return "";
+}
+
+}  // namespace
+
+std::string model_description_xml(const FmuSetup& setup, const std::string& tool_version) {
+  const std::unique_ptr<Component> c = make_component(setup);
+  const std::string id = model_identifier(setup.kind);
+  std::string x;
+  x += "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
+  x += fmt::format(
+      "<fmiModelDescription fmiVersion=\"2.0\" modelName=\"{}\" guid=\"{}\" description=\"{}\" "
+      "generationTool=\"swarmcheck {}\" variableNamingConvention=\"flat\" numberOfEventIndicators=\"0\">\n",
+      model_name(setup.kind), fmu_guid(setup), xml_escape(description_of(setup.kind)), xml_escape(tool_version));
+  x += fmt::format(
+      "  <CoSimulation modelIdentifier=\"{}\" needsExecutionTool=\"false\" "
+      "canHandleVariableCommunicationStepSize=\"{}\" canInterpolateInputs=\"false\" maxOutputDerivativeOrder=\"0\" "
+      "canRunAsynchronuously=\"false\" canBeInstantiatedOnlyOncePerProcess=\"false\" "
+      "canNotUseMemoryManagementFunctions=\"true\" canGetAndSetFMUstate=\"true\" canSerializeFMUstate=\"true\" "
+      "providesDirectionalDerivative=\"false\"/>\n",
+      id, setup.kind == Kind::environment ? "false" : "true");
+  x += "  <LogCategories>\n    <Category name=\"logError\" description=\"errors\"/>\n"
+       "    <Category name=\"logAll\" description=\"every message\"/>\n  </LogCategories>\n";
+  x += fmt::format("  <DefaultExperiment startTime=\"0\" stepSize=\"{}\"/>\n", setup.scenario.params.step_size);
+  x += "  <ModelVariables>\n";
+  const auto& vars = c->table().variables();
+  for (const Variable& v : vars) {
+    x += fmt::format("    <ScalarVariable name=\"{}\" valueReference=\"{}\" causality=\"{}\" variability=\"{}\"",
+                     xml_escape(v.name), v.value_reference, to_string(v.causality), to_string(v.variability));
+    if (v.initial != Initial::none) x += fmt::format(" initial=\"{}\"", to_string(v.initial));
+    const std::string d = c->table().description(v.value_reference);
+    if (!d.empty()) x += fmt::format(" description=\"{}\"", xml_escape(d));
+    x += ">\n      ";
+    const bool start = v.initial == Initial::exact || v.causality == Causality::input;
+    if (v.type == BaseType::real) x += start ? fmt::format("<Real start=\"{:.17g}\"/>", *v.real) : "<Real/>";
+    else x += start ? fmt::format("<Integer start=\"{}\"/>", *v.integer) : "<Integer/>";
+    x += "\n    </ScalarVariable>\n";
+  }
+  x += "  </ModelVariables>\n  <ModelStructure>\n    <Outputs>\n";
+  for (const Variable& v : vars)
+    if (v.causality == Causality::output)
+      x += fmt::format("      <Unknown index=\"{}\" dependencies=\"\"/>\n", v.value_reference + 1);
+  x += "    </Outputs>\n    <InitialUnknowns>\n";
+  for (const Variable& v : vars)
+    if (v.causality == Causality::output && v.initial == Initial::calculated)
+      x += fmt::format("      <Unknown index=\"{}\"/>\n", v.value_reference + 1);
+  x += "    </InitialUnknowns>\n  </ModelStructure>\n</fmiModelDescription>\n";
+  return x;
+}
+
+}  // namespace swarmcheck::fmi

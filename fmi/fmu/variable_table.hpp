@@ -1,0 +1,82 @@
+#pragma once
+// The FMI variables of one FMU instance, bound to the storage of its port structs (ports.hpp):
+// the value reference of a variable is its position here. Built by walking the structs' Hana
+// declarations, so the model description and fmi2Get/Set can never disagree with the code.
+#include <boost/hana.hpp>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <type_traits>
+#include <vector>
+
+#include "fmi/fmu/ports.hpp"
+
+namespace swarmcheck::fmi {
+
+enum class BaseType { real, integer };
+enum class Causality { parameter, input, output, local };
+enum class Variability { constant, fixed, discrete, continuous };
+enum class Initial { none, exact, calculated };
+
+const char* to_string(BaseType t);
+const char* to_string(Causality c);
+const char* to_string(Variability v);
+const char* to_string(Initial i);
+
+struct Variable {
+  std::string name;
+  uint32_t value_reference = 0;
+  BaseType type = BaseType::real;
+  Causality causality = Causality::local;
+  Variability variability = Variability::continuous;
+  Initial initial = Initial::none;
+  double* real = nullptr;       // the storage, by type
+  int32_t* integer = nullptr;
+};
+
+// The role of a group of variables; what FMI 2.0 attributes it gets (section 2.2.7's table):
+//   parameter -> causality parameter, variability fixed, initial exact (a start value)
+//   constant  -> causality local, variability constant, initial exact
+//   input     -> causality input, variability continuous (Real) or discrete (Integer), a start value
+//   output    -> causality output, continuous/discrete, initial calculated (listed as InitialUnknown)
+//   local     -> causality local, continuous/discrete, initial calculated
+enum class Role { parameter, constant, input, output, local };
+
+class VariableTable {
+ public:
+  // Binds every member of `group` (k: robot or obstacle number, 1-based, for repeated groups).
+  template <class Group>
+  void bind(Group& group, Role role, std::optional<int32_t> k = std::nullopt) {
+    boost::hana::for_each(boost::hana::accessors<Group>(), [&](auto pair) {
+      const std::string member = boost::hana::to<const char*>(boost::hana::first(pair));
+      auto& value = boost::hana::second(pair)(group);
+      using T = std::remove_reference_t<decltype(value)>;
+      static_assert(std::is_same_v<T, double> || std::is_same_v<T, int32_t>, "FMU ports are double or int32_t");
+      Variable v;
+      v.name = k ? index_name(member, *k) : member;
+      v.value_reference = static_cast<uint32_t>(vars_.size());
+      if constexpr (std::is_same_v<T, double>) {
+        v.type = BaseType::real;
+        v.real = &value;
+      } else {
+        v.type = BaseType::integer;
+        v.integer = &value;
+      }
+      attributes(v, role);
+      description_.push_back(describe(member));
+      vars_.push_back(std::move(v));
+    });
+  }
+
+  const std::vector<Variable>& variables() const { return vars_; }
+  const char* description(uint32_t vr) const { return description_[vr]; }
+  const Variable* find(uint32_t vr) const { return vr < vars_.size() ? &vars_[vr] : nullptr; }
+  const Variable* find(const std::string& name) const;
+
+ private:
+  static void attributes(Variable& v, Role role);
+  std::vector<Variable> vars_;
+  std::vector<const char*> description_;
+};
+
+}  // namespace swarmcheck::fmi

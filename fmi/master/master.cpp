@@ -1,0 +1,292 @@
+#include "fmi/master/master.hpp"
+
+#include <cmath>
+#include <cstdarg>
+#include <cstdio>
+#include <map>
+
+#include "spec/util/input_error.hpp"
+
+namespace swarmcheck::fmi::master {
+
+// What an instance last logged (the message an error report quotes).
+struct LogSink {
+  std::string last_error;
+  std::string last;
+};
+
+namespace {
+
+void logger(fmi2ComponentEnvironment env, fmi2String, fmi2Status status, fmi2String, fmi2String message, ...) {
+  if (!env || !message) return;
+  char text[2048];
+  va_list args;
+  va_start(args, message);
+  std::vsnprintf(text, sizeof text, message, args);
+  va_end(args);
+  auto* sink = static_cast<LogSink*>(env);
+  sink->last = text;
+  if (status == fmi2Error || status == fmi2Fatal) sink->last_error = text;
+}
+
+const char* status_name(int s) {
+  switch (s) {
+    case fmi2OK: return "fmi2OK";
+    case fmi2Warning: return "fmi2Warning";
+    case fmi2Discard: return "fmi2Discard";
+    case fmi2Error: return "fmi2Error";
+    case fmi2Fatal: return "fmi2Fatal";
+    case fmi2Pending: return "fmi2Pending";
+  }
+  return "an unknown status";
+}
+
+}  // namespace
+
+struct Master::Instance {
+  std::string fmu_key, name, label;
+  const FmuLibrary* library = nullptr;
+  fmi2Component component = nullptr;
+  LogSink sink;
+  fmi2CallbackFunctions callbacks;
+  // The outputs other instances read (one fmi2Get call per type per step), and the inputs set.
+  std::vector<fmi2ValueReference> source_real_vr, source_int_vr, target_real_vr, target_int_vr;
+  std::vector<double> source_real, target_real;
+  std::vector<int> source_int, target_int;
+  std::vector<std::size_t> links_in;   // the links into this instance
+  Instance() : callbacks{logger, nullptr, nullptr, nullptr, &sink} {}
+};
+
+struct Master::Link {
+  std::size_t from = 0, to = 0;
+  VarType type = VarType::real;
+  std::size_t from_slot = 0, to_slot = 0;   // in the source's source_* and the target's target_* arrays
+};
+
+void Master::check(int status, const Instance& in, const std::string& call) const {
+  if (status == fmi2OK || status == fmi2Warning) return;
+  const std::string logged = in.sink.last_error.empty() ? in.sink.last : in.sink.last_error;
+  throw InputError(in.library->path() + ": instance " + in.label,
+                   call + " returned " + status_name(status) + (logged.empty() ? "" : ": " + logged));
+}
+
+Master::Master(const MultiModel& mm, const CoSimConfig& config, Algorithm algorithm)
+    : algorithm_(algorithm), config_(config) {
+  total_steps_ = std::llround((config.end_s - config.start_s) / config.step_s);
+  std::map<std::string, const FmuLibrary*> library_of;
+  for (const auto& [key, file] : mm.fmus) {
+    libraries_.push_back(std::make_unique<FmuLibrary>(file));
+    library_of[key] = libraries_.back().get();
+  }
+  std::map<std::string, std::size_t> index_of;   // "{FMU}.instance"
+  for (const auto& [key, name] : mm.instances) {
+    auto in = std::make_unique<Instance>();
+    in->fmu_key = key;
+    in->name = name;
+    in->label = key + "." + name;
+    in->library = library_of.at(key);
+    index_of[in->label] = instances_.size();
+    instances_.push_back(std::move(in));
+  }
+  const auto variable = [&](const PortName& p, const std::string& where) -> std::pair<std::size_t, const ModelVariable*> {
+    const std::size_t k = index_of.at(p.fmu + "." + p.instance);
+    const ModelVariable* v = instances_[k]->library->description().find(p.variable);
+    if (!v)
+      throw InputError(mm.file + ": " + where,
+                       p.fmu + " (" + instances_[k]->library->path() + ") has no variable " + p.variable);
+    return {k, v};
+  };
+  for (const Connection& c : mm.connections) {
+    const auto [from, out] = variable(c.from, "connections." + c.from.text());
+    const auto [to, in] = variable(c.to, c.where);
+    if (out->causality != "output")
+      throw InputError(mm.file + ": connections." + c.from.text(), c.from.variable + " is " + out->causality + ", not an output");
+    if (in->causality != "input")
+      throw InputError(mm.file + ": " + c.where, c.to.variable + " is " + in->causality + ", not an input");
+    if (out->type != in->type)
+      throw InputError(mm.file + ": " + c.where, std::string("type mismatch: ") + c.from.text() + " is " +
+                                                     to_string(out->type) + ", " + c.to.text() + " is " + to_string(in->type));
+    if (out->type != VarType::real && out->type != VarType::integer)
+      throw InputError(mm.file + ": " + c.where, std::string("this master connects Real and Integer variables, not ") +
+                                                     to_string(out->type));
+    Link link{from, to, out->type, 0, 0};
+    Instance& src = *instances_[from];
+    Instance& dst = *instances_[to];
+    auto& src_vr = out->type == VarType::real ? src.source_real_vr : src.source_int_vr;
+    link.from_slot = src_vr.size();
+    for (std::size_t s = 0; s < src_vr.size(); ++s)
+      if (src_vr[s] == out->value_reference) link.from_slot = s;
+    if (link.from_slot == src_vr.size()) src_vr.push_back(out->value_reference);
+    auto& dst_vr = out->type == VarType::real ? dst.target_real_vr : dst.target_int_vr;
+    link.to_slot = dst_vr.size();
+    dst_vr.push_back(in->value_reference);
+    dst.links_in.push_back(links_.size());
+    links_.push_back(link);
+  }
+  for (auto& in : instances_) {
+    in->source_real.resize(in->source_real_vr.size());
+    in->source_int.resize(in->source_int_vr.size());
+    in->target_real.resize(in->target_real_vr.size());
+    in->target_int.resize(in->target_int_vr.size());
+  }
+  for (const Parameter& p : mm.parameters) {
+    const auto [k, v] = variable(p.port, p.where);
+    if (v->causality != "parameter" && v->causality != "input")
+      throw InputError(mm.file + ": " + p.where, p.port.variable + " is " + v->causality + ", not a parameter or an input");
+    if (v->type == VarType::string) throw InputError(mm.file + ": " + p.where, "String parameters are not supported");
+    if (v->type != VarType::real && !p.integral)
+      throw InputError(mm.file + ": " + p.where, p.port.variable + " is " + to_string(v->type) + ": expected an integer");
+  }
+  // Instantiate, parameters, initialisation.
+  for (auto& in : instances_) {
+    const ModelDescription& md = in->library->description();
+    in->component = in->library->api().instantiate(in->label.c_str(), fmi2CoSimulation, md.guid.c_str(),
+                                                   in->library->resource_uri().c_str(), &in->callbacks, fmi2False, fmi2False);
+    if (!in->component)
+      throw InputError(in->library->path() + ": instance " + in->label,
+                       "fmi2Instantiate failed" + (in->sink.last.empty() ? std::string() : ": " + in->sink.last));
+    check(in->library->api().setup_experiment(in->component, fmi2False, 0.0, config.start_s, fmi2True, config.end_s), *in,
+          "fmi2SetupExperiment");
+  }
+  for (const Parameter& p : mm.parameters) {
+    const auto [k, v] = variable(p.port, p.where);
+    Instance& in = *instances_[k];
+    const fmi2ValueReference vr = v->value_reference;
+    int status = fmi2OK;
+    if (v->type == VarType::real) {
+      const double x = p.value;
+      status = in.library->api().set_real(in.component, &vr, 1, &x);
+    } else if (v->type == VarType::integer) {
+      const int x = static_cast<int>(p.value);
+      status = in.library->api().set_integer(in.component, &vr, 1, &x);
+    } else {
+      const int x = p.value != 0 ? fmi2True : fmi2False;
+      status = in.library->api().set_boolean(in.component, &vr, 1, &x);
+    }
+    check(status, in, "setting parameter " + p.port.variable + " (" + mm.file + ": " + p.where + ")");
+  }
+  for (auto& in : instances_)
+    check(in->library->api().enter_initialization_mode(in->component), *in, "fmi2EnterInitializationMode");
+  for (auto& in : instances_)
+    check(in->library->api().exit_initialization_mode(in->component), *in, "fmi2ExitInitializationMode");
+  for (std::size_t k = 0; k < instances_.size(); ++k) {
+    for (const ModelVariable& v : instances_[k]->library->description().variables) {
+      if (v.causality != "output" || (v.type != VarType::real && v.type != VarType::integer)) continue;
+      output_names_.push_back(instances_[k]->label + "." + v.name);
+      outputs_.push_back(Port{k, v.value_reference, v.type});
+    }
+  }
+}
+
+Master::~Master() {
+  for (auto& in : instances_) {
+    if (!in->component) continue;
+    in->library->api().terminate(in->component);
+    in->library->api().free_instance(in->component);
+  }
+}
+
+double Master::time_s() const { return config_.start_s + static_cast<double>(steps_) * config_.step_s; }
+
+void Master::fetch_sources() {
+  for (auto& in : instances_) {
+    const Fmi2Functions& api = in->library->api();
+    if (!in->source_real_vr.empty())
+      check(api.get_real(in->component, in->source_real_vr.data(), in->source_real_vr.size(), in->source_real.data()), *in,
+            "fmi2GetReal");
+    if (!in->source_int_vr.empty())
+      check(api.get_integer(in->component, in->source_int_vr.data(), in->source_int_vr.size(), in->source_int.data()), *in,
+            "fmi2GetInteger");
+  }
+}
+
+// Sets the target's inputs from the sources' values fetched (latest: fetched now, one by one).
+void Master::set_inputs(std::size_t target, bool latest) {
+  Instance& dst = *instances_[target];
+  for (const std::size_t li : dst.links_in) {
+    const Link& l = links_[li];
+    Instance& src = *instances_[l.from];
+    if (l.type == VarType::real) {
+      if (latest)
+        check(src.library->api().get_real(src.component, &src.source_real_vr[l.from_slot], 1, &src.source_real[l.from_slot]),
+              src, "fmi2GetReal");
+      dst.target_real[l.to_slot] = src.source_real[l.from_slot];
+    } else {
+      if (latest)
+        check(src.library->api().get_integer(src.component, &src.source_int_vr[l.from_slot], 1, &src.source_int[l.from_slot]),
+              src, "fmi2GetInteger");
+      dst.target_int[l.to_slot] = src.source_int[l.from_slot];
+    }
+  }
+  const Fmi2Functions& api = dst.library->api();
+  if (!dst.target_real_vr.empty())
+    check(api.set_real(dst.component, dst.target_real_vr.data(), dst.target_real_vr.size(), dst.target_real.data()), dst,
+          "fmi2SetReal");
+  if (!dst.target_int_vr.empty())
+    check(api.set_integer(dst.component, dst.target_int_vr.data(), dst.target_int_vr.size(), dst.target_int.data()), dst,
+          "fmi2SetInteger");
+}
+
+void Master::step() {
+  const double t = time_s();
+  const auto do_step = [&](Instance& in) {
+    char when[64];
+    std::snprintf(when, sizeof when, "fmi2DoStep at t = %.17g s", t);
+    check(in.library->api().do_step(in.component, t, config_.step_s, fmi2True), in, when);
+  };
+  if (algorithm_ == Algorithm::jacobi) {
+    fetch_sources();
+    for (std::size_t k = 0; k < instances_.size(); ++k) set_inputs(k, false);
+    for (auto& in : instances_) do_step(*in);
+  } else {
+    for (std::size_t k = 0; k < instances_.size(); ++k) {
+      set_inputs(k, true);
+      do_step(*instances_[k]);
+    }
+  }
+  ++steps_;
+}
+
+Master::Port Master::port(const std::string& name) const {
+  for (std::size_t k = 0; k < instances_.size(); ++k) {
+    const std::string& label = instances_[k]->label;
+    if (name.size() <= label.size() + 1 || name.compare(0, label.size(), label) != 0 || name[label.size()] != '.') continue;
+    const ModelVariable* v = instances_[k]->library->description().find(name.substr(label.size() + 1));
+    if (v) return Port{k, v->value_reference, v->type};
+  }
+  throw InputError(name, "no such instance variable in the multi-model");
+}
+
+double Master::value(const Port& p) const {
+  const Instance& in = *instances_[p.instance];
+  const Fmi2Functions& api = in.library->api();
+  if (p.type == VarType::real) {
+    double x = 0;
+    check(api.get_real(in.component, &p.value_reference, 1, &x), in, "fmi2GetReal");
+    return x;
+  }
+  int x = 0;
+  if (p.type == VarType::integer) check(api.get_integer(in.component, &p.value_reference, 1, &x), in, "fmi2GetInteger");
+  else if (p.type == VarType::boolean) check(api.get_boolean(in.component, &p.value_reference, 1, &x), in, "fmi2GetBoolean");
+  else throw InputError(in.label, "String variables are not read by this master");
+  return x;
+}
+
+void Master::output_values(std::vector<double>& out) const {
+  out.resize(outputs_.size());
+  for (std::size_t k = 0; k < outputs_.size(); ++k) out[k] = value(outputs_[k]);
+}
+
+std::vector<std::string> Master::instance_names() const {
+  std::vector<std::string> out;
+  for (const auto& in : instances_) out.push_back(in->label);
+  return out;
+}
+
+const std::string& Master::model_name_of(const std::string& instance) const {
+  for (const auto& in : instances_)
+    if (in->label == instance) return in->library->description().model_name;
+  throw InputError(instance, "no such instance");
+}
+
+}  // namespace swarmcheck::fmi::master

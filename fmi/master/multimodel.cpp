@@ -1,0 +1,128 @@
+#include "fmi/master/multimodel.hpp"
+
+#include <cmath>
+#include <filesystem>
+
+#include "spec/util/hana_json.hpp"
+#include "spec/util/input_error.hpp"
+#include "spec/util/input_file.hpp"
+#include "spec/util/json_text.hpp"
+
+namespace swarmcheck::fmi::master {
+namespace {
+
+using json_io::Json;
+
+Json parse_file(const std::string& path, const char* what) {
+  return json_io::parse_json_text(io_input::read_input_file(path, what), path);
+}
+
+// "{FMU}.instance.variable": the FMU key is braced, the instance has no dot; the variable is the rest.
+PortName port_name(const std::string& text, const std::string& file, const std::string& where) {
+  const std::size_t close = text.find('}');
+  const std::size_t dot1 = close == std::string::npos ? std::string::npos : text.find('.', close);
+  const std::size_t dot2 = dot1 == std::string::npos ? std::string::npos : text.find('.', dot1 + 1);
+  if (text.empty() || text[0] != '{' || close == std::string::npos || dot1 != close + 1 || dot2 == std::string::npos ||
+      dot2 == dot1 + 1 || dot2 + 1 >= text.size())
+    throw InputError(file + ": " + where, "expected \"{FMU}.instance.variable\", got \"" + text + "\"");
+  return PortName{text.substr(0, close + 1), text.substr(dot1 + 1, dot2 - dot1 - 1), text.substr(dot2 + 1)};
+}
+
+}  // namespace
+
+MultiModel read_multimodel(const std::string& path) {
+  const Json j = parse_file(path, "multi-model");
+  MultiModel mm;
+  mm.file = path;
+  if (!j.is_object()) throw InputError(path, "expected a JSON object (an INTO-CPS multi-model)");
+  if (!j.contains("fmus") || !j["fmus"].is_object() || j["fmus"].empty())
+    throw InputError(path + ": fmus", "expected an object of \"{FMU}\": \"file.fmu\" (at least one)");
+  const std::filesystem::path folder = std::filesystem::path(path).parent_path();
+  for (const auto& [key, value] : j["fmus"].items()) {
+    if (key.size() < 3 || key.front() != '{' || key.back() != '}' || key.find('.') != std::string::npos)
+      throw InputError(path + ": fmus." + key, "expected an FMU key written {Name}");
+    if (!value.is_string()) throw InputError(path + ": fmus." + key, "expected the FMU's file name (a string)");
+    std::string file = value.get<std::string>();
+    if (file.rfind("file://", 0) == 0) file = file.substr(7);
+    const std::filesystem::path p(file);
+    mm.fmus.emplace_back(key, (p.is_absolute() ? p : folder / p).string());
+  }
+  const auto known_fmu = [&](const PortName& p, const std::string& where) {
+    for (const auto& [key, file] : mm.fmus)
+      if (key == p.fmu) return;
+    throw InputError(path + ": " + where, "FMU " + p.fmu + " is not in \"fmus\"");
+  };
+  std::vector<std::pair<std::string, std::string>> seen;   // in order of appearance
+  const auto note_instance = [&](const PortName& p) {
+    for (const auto& s : seen)
+      if (s.first == p.fmu && s.second == p.instance) return;
+    seen.emplace_back(p.fmu, p.instance);
+  };
+  if (j.contains("connections")) {
+    if (!j["connections"].is_object()) throw InputError(path + ": connections", "expected an object");
+    for (const auto& [from, targets] : j["connections"].items()) {
+      const std::string where = "connections." + from;
+      const PortName src = port_name(from, path, where);
+      known_fmu(src, where);
+      note_instance(src);
+      if (!targets.is_array()) throw InputError(path + ": " + where, "expected a list of \"{FMU}.instance.input\"");
+      for (std::size_t k = 0; k < targets.size(); ++k) {
+        const std::string w = where + "[" + std::to_string(k) + "]";
+        if (!targets[k].is_string()) throw InputError(path + ": " + w, "expected \"{FMU}.instance.input\"");
+        const PortName dst = port_name(targets[k].get<std::string>(), path, w);
+        known_fmu(dst, w);
+        note_instance(dst);
+        for (const Connection& c : mm.connections)
+          if (c.to.text() == dst.text())
+            throw InputError(path + ": " + w, "input " + dst.text() + " is connected twice (also at " + c.where + ")");
+        mm.connections.push_back(Connection{src, dst, w});
+      }
+    }
+  }
+  if (j.contains("parameters")) {
+    if (!j["parameters"].is_object()) throw InputError(path + ": parameters", "expected an object");
+    for (const auto& [name, value] : j["parameters"].items()) {
+      const std::string where = "parameters." + name;
+      const PortName p = port_name(name, path, where);
+      known_fmu(p, where);
+      note_instance(p);
+      Parameter par{p, 0, false, where};
+      if (value.is_boolean()) par.value = value.get<bool>() ? 1 : 0, par.integral = true;
+      else if (value.is_number_integer()) par.value = value.get<double>(), par.integral = true;
+      else if (value.is_number()) par.value = value.get<double>();
+      else throw InputError(path + ": " + where, "expected a number or a boolean");
+      mm.parameters.push_back(par);
+    }
+  }
+  for (const auto& [key, file] : mm.fmus)
+    for (const auto& s : seen)
+      if (s.first == key) mm.instances.push_back(s);
+  if (mm.instances.empty()) throw InputError(path, "no instance: name instances in connections or parameters");
+  return mm;
+}
+
+CoSimConfig read_config(const std::string& path) {
+  CoSimConfig c;
+  if (path.empty()) return c;
+  const Json j = parse_file(path, "co-simulation configuration");
+  if (!j.is_object()) throw InputError(path, "expected a JSON object (an INTO-CPS co-simulation configuration)");
+  const auto number = [&](const Json& v, const std::string& where) {
+    if (!v.is_number() || !std::isfinite(v.get<double>())) throw InputError(path + ": " + where, "expected a finite number");
+    return v.get<double>();
+  };
+  if (j.contains("startTime")) c.start_s = number(j["startTime"], "startTime");
+  if (j.contains("endTime")) c.end_s = number(j["endTime"], "endTime");
+  if (j.contains("algorithm")) {
+    const Json& a = j["algorithm"];
+    if (!a.is_object() || a.value("type", "") != "fixed-step")
+      throw InputError(path + ": algorithm.type", "expected \"fixed-step\" (the one algorithm this master runs)");
+    if (!a.contains("size")) throw InputError(path + ": algorithm.size", "expected the step size, s");
+    c.step_s = number(a["size"], "algorithm.size");
+  }
+  if (!(c.step_s > 0)) throw InputError(path + ": algorithm.size", "expected a step size > 0");
+  if (!(c.end_s >= c.start_s)) throw InputError(path + ": endTime", "expected endTime >= startTime");
+  if ((c.end_s - c.start_s) / c.step_s > 1e9) throw InputError(path + ": endTime", "expected at most 10^9 steps");
+  return c;
+}
+
+}  // namespace swarmcheck::fmi::master
