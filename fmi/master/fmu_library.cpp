@@ -192,6 +192,10 @@ FmuLibrary::FmuLibrary(const std::string& fmu_path) : path_(fmu_path) {
     api_.get_state = symbol<fmi2GetFMUstateTYPE>(handle_, "fmi2GetFMUstate", fmu_path, false);
     api_.set_state = symbol<fmi2SetFMUstateTYPE>(handle_, "fmi2SetFMUstate", fmu_path, false);
     api_.free_state = symbol<fmi2FreeFMUstateTYPE>(handle_, "fmi2FreeFMUstate", fmu_path, false);
+    api_.serialized_state_size = symbol<fmi2SerializedFMUstateSizeTYPE>(handle_, "fmi2SerializedFMUstateSize", fmu_path, false);
+    api_.serialize_state = symbol<fmi2SerializeFMUstateTYPE>(handle_, "fmi2SerializeFMUstate", fmu_path, false);
+    api_.deserialize_state = symbol<fmi2DeSerializeFMUstateTYPE>(handle_, "fmi2DeSerializeFMUstate", fmu_path, false);
+    api_.reset = symbol<fmi2ResetTYPE>(handle_, "fmi2Reset", fmu_path, true);
     resource_uri_ = file_uri(dir_ + "/resources");
   } catch (...) {
     if (handle_) dlclose(handle_);

@@ -53,6 +53,10 @@ struct Fmi2Functions {
   fmi2GetFMUstateTYPE* get_state = nullptr;     // optional (canGetAndSetFMUstate)
   fmi2SetFMUstateTYPE* set_state = nullptr;
   fmi2FreeFMUstateTYPE* free_state = nullptr;
+  fmi2SerializedFMUstateSizeTYPE* serialized_state_size = nullptr;   // optional (canSerializeFMUstate)
+  fmi2SerializeFMUstateTYPE* serialize_state = nullptr;
+  fmi2DeSerializeFMUstateTYPE* deserialize_state = nullptr;
+  fmi2ResetTYPE* reset = nullptr;
 };
 
 class FmuLibrary {

@@ -1,0 +1,151 @@
+// `fmu export` and `cosim` from the outside: the README's commands work, and bad multi-models
+// are exit status 2 with one message naming the file and JSON path (or the FMU's logged
+// message), with no temporary folder left behind.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "tests/fmi/scratch.hpp"
+#include "tests/util/shell.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using swarmcheck::testing::run_binary;
+using Json = nlohmann::ordered_json;
+
+const std::string kBin = SWARMCHECK_BIN;
+
+struct Folder {
+  fs::path dir = swarmcheck::testing::fmi_scratch("cli");
+  fs::path tmp = dir / "tmp";
+  Folder() {
+    fs::create_directories(tmp);
+    const auto r = run_binary(kBin, "fmu export --intocps " + (dir / "mm").string());
+    EXPECT_EQ(r.status, 0) << r.out;
+  }
+  ~Folder() { fs::remove_all(dir); }
+  // Runs cosim with TMPDIR inside the test's folder, so what is left there can be seen.
+  swarmcheck::testing::ShellResult cosim(const std::string& args) const {
+    return run_binary("TMPDIR=" + tmp.string() + " " + kBin, "cosim " + args);
+  }
+  bool tmp_empty() const { return fs::is_empty(tmp); }
+  Json multimodel() const { return Json::parse(std::ifstream(dir / "mm" / "multimodel.json")); }
+  std::string write(const Json& j, const std::string& name) const {
+    const fs::path p = dir / "mm" / name;
+    std::ofstream(p) << j.dump(2);
+    return p.string();
+  }
+};
+
+}  // namespace
+
+TEST(FmiCli, ExportWritesTheThreeFmusAndCosimRunsTheThesisMultiModelToCompletion) {
+  Folder f;
+  for (const char* kind : {"environment", "controller", "body"}) {
+    const auto r = run_binary(kBin, std::string("fmu export ") + kind + " -o " + (f.dir / (std::string(kind) + ".fmu")).string());
+    EXPECT_EQ(r.status, 0) << r.out;
+    EXPECT_TRUE(fs::file_size(f.dir / (std::string(kind) + ".fmu")) > 1000);
+  }
+  const std::string csv = (f.dir / "outputs.csv").string();
+  const auto r = f.cosim((f.dir / "mm" / "multimodel.json").string() + " --config " + (f.dir / "mm" / "coe.json").string() +
+                         " -o " + csv + " --json");
+  ASSERT_EQ(r.status, 0) << r.out;
+  const Json summary = Json::parse(r.out);
+  EXPECT_EQ(summary["eP"], 100.0);
+  EXPECT_EQ(summary["completion_step"], 24410);
+  EXPECT_EQ(summary["handshake"], "held");
+  std::ifstream in(csv);
+  std::string header;
+  std::getline(in, header);
+  EXPECT_EQ(header.rfind("time,{Controller}.controller1.servoLeft,", 0), 0u) << header.substr(0, 80);
+  EXPECT_NE(header.find(",{Environment}.environment.eP,"), std::string::npos);
+  EXPECT_TRUE(f.tmp_empty());
+}
+
+TEST(FmiCli, GaussSeidelReportsTheStaleAcceptanceWithStatusOne) {
+  Folder f;
+  const auto r = f.cosim((f.dir / "mm" / "multimodel.json").string() + " --config " + (f.dir / "mm" / "coe.json").string() +
+                         " --algorithm gauss-seidel");
+  EXPECT_EQ(r.status, 1) << r.out;
+  EXPECT_NE(r.out.find("handshake VIOLATED (fresh-acceptance)"), std::string::npos) << r.out;
+}
+
+TEST(FmiCli, BadMultiModelsAreStatusTwoWithTheJsonPathAndLeaveNoTemporaryFolder) {
+  Folder f;
+  const Json good = f.multimodel();
+  struct Case {
+    std::string what, expected;
+    Json mm;
+  };
+  std::vector<Case> cases;
+  {
+    Json j = good;
+    j["fmus"]["{Body}"] = "missing.fmu";
+    cases.push_back({"a missing FMU", "missing.fmu: no such FMU file", j});
+  }
+  {
+    Json j = good;
+    j["connections"]["{Body}.body1.robot_x"].push_back("{Controller}.controller2.nonesuch");
+    cases.push_back({"an unknown variable", "has no variable nonesuch", j});
+  }
+  {
+    Json j = good;
+    j["connections"]["{Body}.body2.robot_x"].push_back("{Controller}.controller1.x");
+    cases.push_back({"an input connected twice", "input {Controller}.controller1.x is connected twice", j});
+  }
+  {
+    Json j = good;
+    j["connections"]["{Controller}.controller1.servoLeft"] = Json::array({"{Environment}.environment.onDestination1Input"});
+    j["connections"]["{Controller}.controller1.onDestinationOutput"] = Json::array();
+    cases.push_back({"a type mismatch", "type mismatch", j});
+  }
+  {
+    Json j = good;
+    j["parameters"]["{Environment}.environment.mapSize"] = 0;
+    cases.push_back({"an FMU returning fmi2Error", "fmi2ExitInitializationMode returned fmi2Error: ", j});
+  }
+  {
+    Json j = good;
+    j["connections"]["{Nowhere}.x.y"] = Json::array({"{Body}.body1.servo_left_input"});
+    cases.push_back({"an unknown FMU key", "connections.{Nowhere}.x.y: FMU {Nowhere} is not in \"fmus\"", j});
+  }
+  {
+    Json j = good;
+    j["connections"]["{Body}.body1.robot_x"] = Json::array({"{Controller}.controller1.onDestinationOutput"});
+    cases.push_back({"an output used as an input", "not an input", j});
+  }
+  for (std::size_t k = 0; k < cases.size(); ++k) {
+    const std::string path = f.write(cases[k].mm, "bad" + std::to_string(k) + ".json");
+    const auto r = f.cosim(path + " --config " + (f.dir / "mm" / "coe.json").string());
+    EXPECT_EQ(r.status, 2) << cases[k].what << ": " << r.out;
+    EXPECT_NE(r.out.find(cases[k].expected), std::string::npos) << cases[k].what << ": " << r.out;
+    EXPECT_EQ(r.out.rfind("swarmcheck: error: ", 0), 0u) << r.out;
+    EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 1) << r.out;
+    EXPECT_TRUE(f.tmp_empty()) << cases[k].what;
+  }
+  // Not an FMU at all, and a configuration of another algorithm.
+  std::ofstream(f.dir / "mm" / "text.fmu") << "not a zip";
+  Json j = good;
+  j["fmus"]["{Body}"] = "text.fmu";
+  auto r = f.cosim(f.write(j, "text.json"));
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.out.find("expected an FMU (a zip archive)"), std::string::npos) << r.out;
+  std::ofstream(f.dir / "coe-bad.json") << R"({"algorithm": {"type": "var-step", "size": 0.1}})";
+  r = f.cosim((f.dir / "mm" / "multimodel.json").string() + " --config " + (f.dir / "coe-bad.json").string());
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.out.find("algorithm.type: expected \"fixed-step\""), std::string::npos) << r.out;
+  EXPECT_TRUE(f.tmp_empty());
+}
+
+TEST(FmiCli, ExportRefusesImpossibleRequestsWithStatusTwo) {
+  Folder f;
+  EXPECT_EQ(run_binary(kBin, "fmu export environment").status, 2);                        // no -o
+  EXPECT_EQ(run_binary(kBin, "fmu export --robots 500 --intocps " + (f.dir / "x").string()).status, 2);   // 96 free cells
+  const auto r = run_binary(kBin, "fmu export body --robots 0 -o " + (f.dir / "b.fmu").string());
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.out.find("--robots"), std::string::npos) << r.out;
+  EXPECT_FALSE(fs::exists(f.dir / "b.fmu"));
+}
