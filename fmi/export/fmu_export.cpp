@@ -124,7 +124,7 @@ std::string fmu_archive(const FmuSetup& setup) {
 
 void write_fmu(const FmuSetup& setup, const std::string& path) { io::write_file_atomically(path, fmu_archive(setup)); }
 
-void write_intocps(const ex::Scenario& s, Handshake handshake, const std::string& dir) {
+void write_intocps(const ex::Scenario& s, Handshake handshake, const std::string& dir, std::optional<double> end_time_s) {
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
   if (ec) throw InputError(dir, "cannot create the folder: " + ec.message());
@@ -169,14 +169,16 @@ void write_intocps(const ex::Scenario& s, Handshake handshake, const std::string
   mm["parameters"] = parameters;
 
   // The end: the library's completion step for this scenario (the same system), else max_steps.
-  ex::Scenario as_cosim = s;
-  as_cosim.mode = ex::Mode::cosim;
-  Exploration run(as_cosim, ExplorationOptions{});
-  while (!run.done()) run.step();
-  const int64_t steps = run.completion_step().value_or(s.max_steps);
+  if (!end_time_s) {
+    ex::Scenario as_cosim = s;
+    as_cosim.mode = ex::Mode::cosim;
+    Exploration run(as_cosim, ExplorationOptions{});
+    while (!run.done()) run.step();
+    end_time_s = static_cast<double>(run.completion_step().value_or(s.max_steps)) * s.params.step_size;
+  }
   Json coe;
   coe["startTime"] = 0.0;
-  coe["endTime"] = static_cast<double>(steps) * s.params.step_size;
+  coe["endTime"] = *end_time_s;
   coe["algorithm"] = Json::object({{"type", "fixed-step"}, {"size", s.params.step_size}});
   io::write_file_atomically(in("coe.json"), coe.dump(2) + "\n");
   io::write_file_atomically(in("multimodel.json"), mm.dump(2) + "\n");

@@ -6,6 +6,7 @@
 //           resources/swarmcheck-fmu.json            kind, robot and obstacle counts, scenario
 // Archives are byte-identical for the same request (fixed timestamps, fixed order).
 #include <cstdint>
+#include <optional>
 #include <string>
 
 #include "fmi/fmu/component.hpp"
@@ -32,7 +33,9 @@ enum class Handshake { flag, epoch };
 // The thesis's architecture in `dir` (created if missing): Environment.fmu, Controller.fmu,
 // Body.fmu, multimodel.json (one Environment, one Controller and one Body instance per robot,
 // connected as the thesis's FMUs are) and coe.json (fixed step = step_size; end time = the
-// scenario's completion time as the library computes it, or max_steps when it does not complete).
-void write_intocps(const exploration::Scenario& s, Handshake handshake, const std::string& dir);
+// scenario's completion time as the library computes it, or max_steps when it does not complete;
+// or end_time_s when given, without that run).
+void write_intocps(const exploration::Scenario& s, Handshake handshake, const std::string& dir,
+                   std::optional<double> end_time_s = std::nullopt);
 
 }  // namespace swarmcheck::fmi

@@ -1,6 +1,8 @@
 // The Body FMU: spec body_step (the INTO-CPS line follower Body_Block's steady state) for one
 // robot; its outputs are its state.
+#include <bit>
 #include <cmath>
+#include <cstdint>
 
 #include "fmi/fmu/kinds.hpp"
 #include "spec/exploration/body.hpp"
@@ -36,19 +38,32 @@ class BodyComponent final : public Component {
   void step(double h_s) override {
     if (std::isnan(in_.servo_left_input) || std::isnan(in_.servo_right_input))
       throw FmuError("servo_left_input and servo_right_input must be numbers, got NaN");
+    if (ex::body_stays({out_.robot_x, out_.robot_y, out_.robot_theta}, in_.servo_left_input, in_.servo_right_input))
+      return;   // body_step would return the same bits
     ex::RobotParams rp;
     rp.wheel_radius_m = params_.wheel_radius;
     rp.motor_gain_rad_per_s = params_.motor_gain;
     rp.half_axle_m = params_.half_axle;
-    const ex::BodyState next =
-        ex::body_step(rp, {out_.robot_x, out_.robot_y, out_.robot_theta}, in_.servo_left_input, in_.servo_right_input, h_s);
-    out_ = {next.x_m, next.y_m, next.theta_rad};
+    // The heading of the step before is kept, as the library's master keeps it: heading_of of the
+    // same double is the same bits, and a straight drive then needs no trigonometry.
+    const ex::BodyState pose{out_.robot_x, out_.robot_y, out_.robot_theta};
+    if (std::bit_cast<uint64_t>(pose.theta_rad) != std::bit_cast<uint64_t>(heading_theta_)) {
+      heading_ = ex::heading_of(pose.theta_rad);
+      heading_theta_ = pose.theta_rad;
+    }
+    const ex::BodyStep next =
+        ex::body_step_with_heading(rp, pose, heading_, in_.servo_left_input, in_.servo_right_input, h_s);
+    out_ = {next.state.x_m, next.state.y_m, next.state.theta_rad};
+    heading_ = next.heading;
+    heading_theta_ = next.state.theta_rad;
   }
 
  private:
   BodyParameters params_{};
   BodyInputs in_{};
   BodyOutputs out_{};
+  ex::Heading heading_ = ex::heading_of(0.0);   // heading_of(heading_theta_)
+  double heading_theta_ = 0.0;
 };
 
 }  // namespace

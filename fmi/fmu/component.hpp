@@ -52,6 +52,8 @@ class Component {
   virtual void step(double h_s) = 0;
   // The start values of every variable (fmi2Instantiate, fmi2Reset).
   virtual void defaults() = 0;
+  // Brings variables computed only when read up to date (before any fmi2Get and state save).
+  virtual void settle() {}
 
   // The whole state: every variable's value, then what the kind keeps besides.
   std::vector<uint8_t> save() const;

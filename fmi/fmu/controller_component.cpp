@@ -7,6 +7,7 @@
 //   which the Environment reads as `done` (both are raised by arrived_rule at the same step and
 //   lowered by the acceptance).
 #include <cmath>
+#include <optional>
 
 #include "fmi/fmu/kinds.hpp"
 #include "spec/exploration/controller.hpp"
@@ -27,6 +28,7 @@ class ControllerComponent final : public Component {
   }
 
   void defaults() override {
+    last_.reset();
     const ex::RobotParams rp;
     params_ = {rp.k_beta, rp.k_v, 0};
     in_ = {0.0, 0.0, 0.0, 0.0, 0.0, 0, 0};
@@ -67,20 +69,41 @@ class ControllerComponent final : public Component {
     }
     const ex::ControllerInputs inputs{pose, waypoint, told};
     const ex::ControllerState next = ex::controller_step(rp, before, inputs);
-    const ex::ControllerLocals locals = ex::controller_locals(rp, before, inputs);
     if (params_.handshake == 0) accepted = before.on_destination_output == 1 && next.on_destination_output == 0;
     out_.servoLeft = next.servo_left;
     out_.servoRight = next.servo_right;
     out_.onDestinationOutput = next.on_destination_output;
     out_.accepted += accepted ? 1 : 0;
-    local_ = {next.beta_rad, locals.rho_m, locals.v, locals.w, next.maneuver};
+    local_.beta = next.beta_rad;
+    local_.maneuver = next.maneuver;
+    // rho, v and w cost the step's trigonometry again: computed when read (settle), not each step.
+    last_ = Last{rp, before, inputs};
   }
+
+  void settle() override {
+    if (!last_) return;
+    const ex::ControllerLocals l = ex::controller_locals(last_->rp, last_->before, last_->inputs);
+    local_.rho = l.rho_m;
+    local_.v = l.v;
+    local_.w = l.w;
+    last_.reset();
+  }
+
+ protected:
+  // The locals are part of the saved state (settled before a save): nothing else to keep.
+  void restore_extra(std::span<const uint8_t>& /*in*/) override { last_.reset(); }
 
  private:
   ControllerParameters params_{};
   ControllerInputs in_{};
   ControllerOutputs out_{};
   ControllerLocalVariables local_{};
+  struct Last {
+    ex::RobotParams rp;
+    ex::ControllerState before;
+    ex::ControllerInputs inputs;
+  };
+  std::optional<Last> last_;   // the step whose rho, v, w are not computed yet
 };
 
 }  // namespace

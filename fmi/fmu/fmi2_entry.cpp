@@ -63,16 +63,14 @@ const char* phase_name(Phase p) {
   return "?";
 }
 
-// Runs `body` for a valid instance in one of the allowed phases.
-template <class Body>
-fmi2Status guarded(fmi2Component c, const char* what, std::initializer_list<Phase> allowed, Body&& body) {
-  auto* in = static_cast<Instance*>(c);
-  if (!in) return fmi2Error;
-  bool ok = false;
-  for (const Phase p : allowed) ok = ok || p == in->phase;
-  if (!ok) return fail(in, std::string(what) + ": not allowed in " + phase_name(in->phase));
+[[gnu::noinline, gnu::cold]] fmi2Status wrong_phase(Instance* in, const char* what) {
+  return fail(in, std::string(what) + ": not allowed in " + phase_name(in->phase));
+}
+
+// Called from a catch handler: turns the exception being handled into fmi2Error and a message.
+[[gnu::noinline, gnu::cold]] fmi2Status exception_status(Instance* in, const char* what) {
   try {
-    return body(*in);
+    throw;
   } catch (const FmuError& e) {
     return fail(in, std::string(what) + ": " + e.what());
   } catch (const std::bad_alloc&) {
@@ -81,6 +79,24 @@ fmi2Status guarded(fmi2Component c, const char* what, std::initializer_list<Phas
   } catch (const std::exception& e) {
     in->phase = Phase::failed;
     return fail(in, std::string(what) + ": internal error (please report): " + e.what());
+  } catch (...) {
+    in->phase = Phase::failed;
+    return fail(in, std::string(what) + ": internal error (please report)");
+  }
+}
+
+// Runs `body` for a valid instance in one of the allowed phases.
+template <class Body>
+fmi2Status guarded(fmi2Component c, const char* what, std::initializer_list<Phase> allowed, Body&& body) {
+  auto* in = static_cast<Instance*>(c);
+  if (!in) return fmi2Error;
+  bool ok = false;
+  for (const Phase p : allowed) ok = ok || p == in->phase;
+  if (!ok) return wrong_phase(in, what);
+  try {
+    return body(*in);
+  } catch (...) {
+    return exception_status(in, what);
   }
 }
 
@@ -104,22 +120,32 @@ std::string path_of_uri(const std::string& uri) {
   return out;
 }
 
-const Variable* variable(Instance& in, fmi2ValueReference vr, BaseType type, const char* what) {
+// The messages are built out of line: the checks below run for every value of every call.
+[[gnu::noinline, gnu::cold]] void no_such_variable(const Instance& in, fmi2ValueReference vr, const char* what) {
   const Variable* v = in.component->table().find(vr);
   if (!v) throw FmuError(std::string(what) + ": no variable has value reference " + std::to_string(vr));
-  if (v->type != type)
-    throw FmuError(std::string(what) + ": " + v->name + " (value reference " + std::to_string(vr) + ") is " +
-                   to_string(v->type));
-  return v;
+  throw FmuError(std::string(what) + ": " + v->name + " (value reference " + std::to_string(vr) + ") is " +
+                 to_string(v->type));
 }
 
-// Whether variable v may be set now (FMI 2.0 section 4.2.4, table of fmi2SetXXX).
-void check_settable(const Instance& in, const Variable& v, const char* what) {
-  const bool before_init = in.phase == Phase::instantiated || in.phase == Phase::initialization;
-  if (v.causality == Causality::input) return;
-  if (v.causality == Causality::parameter && before_init) return;
+[[gnu::noinline, gnu::cold]] void not_settable(const Instance& in, fmi2ValueReference vr, const char* what) {
+  const Variable& v = *in.component->table().find(vr);
   throw FmuError(std::string(what) + ": " + v.name + " (" + to_string(v.causality) + ", " + to_string(v.variability) +
                  ") cannot be set in " + phase_name(in.phase));
+}
+
+inline const VariableTable::Slot& variable(const Instance& in, fmi2ValueReference vr, BaseType type, const char* what) {
+  const VariableTable::Slot* s = in.component->table().slot(vr);
+  if (!s || s->type != type) no_such_variable(in, vr, what);
+  return *s;
+}
+
+// Whether variable vr may be set now (FMI 2.0 section 4.2.4, table of fmi2SetXXX).
+inline void check_settable(const Instance& in, const VariableTable::Slot& s, fmi2ValueReference vr, const char* what) {
+  if (s.causality == Causality::input) return;
+  const bool before_init = in.phase == Phase::instantiated || in.phase == Phase::initialization;
+  if (s.causality == Causality::parameter && before_init) return;
+  not_settable(in, vr, what);
 }
 
 template <class T, class Get>
@@ -127,7 +153,15 @@ fmi2Status get_values(fmi2Component c, const fmi2ValueReference vr[], size_t n, 
                       const char* what, Get&& get) {
   return guarded(c, what, {Phase::initialization, Phase::stepping, Phase::terminated, Phase::failed}, [&](Instance& in) {
     if (n > 0 && (!vr || !value)) throw FmuError("null array");
-    for (size_t k = 0; k < n; ++k) value[k] = get(*variable(in, vr[k], type, what));
+    bool settled = false;
+    for (size_t k = 0; k < n; ++k) {
+      const VariableTable::Slot& s = variable(in, vr[k], type, what);
+      if (s.causality == Causality::local && !settled) {   // locals may be computed when read
+        in.component->settle();
+        settled = true;
+      }
+      value[k] = get(s);
+    }
     return fmi2OK;
   });
 }
@@ -137,8 +171,16 @@ fmi2Status set_values(fmi2Component c, const fmi2ValueReference vr[], size_t n, 
                       const char* what, Set&& set) {
   return guarded(c, what, {Phase::instantiated, Phase::initialization, Phase::stepping}, [&](Instance& in) {
     if (n > 0 && (!vr || !value)) throw FmuError("null array");
-    for (size_t k = 0; k < n; ++k) check_settable(in, *variable(in, vr[k], type, what), what);
-    for (size_t k = 0; k < n; ++k) set(*variable(in, vr[k], type, what), value[k]);
+    // Every variable is checked before any is set (a refused call changes nothing).
+    constexpr size_t kOnStack = 32;
+    const VariableTable::Slot* on_stack[kOnStack];
+    std::vector<const VariableTable::Slot*> on_heap(n > kOnStack ? n : 0);
+    const VariableTable::Slot** slots = n > kOnStack ? on_heap.data() : on_stack;
+    for (size_t k = 0; k < n; ++k) {
+      slots[k] = &variable(in, vr[k], type, what);
+      check_settable(in, *slots[k], vr[k], what);
+    }
+    for (size_t k = 0; k < n; ++k) set(*slots[k], value[k]);
     return fmi2OK;
   });
 }
@@ -234,10 +276,11 @@ FMI2_EXPORT fmi2Status fmi2Reset(fmi2Component c) {
 }
 
 FMI2_EXPORT fmi2Status fmi2GetReal(fmi2Component c, const fmi2ValueReference vr[], size_t n, fmi2Real value[]) {
-  return get_values(c, vr, n, value, BaseType::real, "fmi2GetReal", [](const Variable& v) { return *v.real; });
+  return get_values(c, vr, n, value, BaseType::real, "fmi2GetReal", [](const VariableTable::Slot& v) { return *v.real; });
 }
 FMI2_EXPORT fmi2Status fmi2GetInteger(fmi2Component c, const fmi2ValueReference vr[], size_t n, fmi2Integer value[]) {
-  return get_values(c, vr, n, value, BaseType::integer, "fmi2GetInteger", [](const Variable& v) { return *v.integer; });
+  return get_values(c, vr, n, value, BaseType::integer, "fmi2GetInteger",
+                    [](const VariableTable::Slot& v) { return *v.integer; });
 }
 FMI2_EXPORT fmi2Status fmi2GetBoolean(fmi2Component c, const fmi2ValueReference[], size_t n, fmi2Boolean[]) {
   return guarded(c, "fmi2GetBoolean", {Phase::initialization, Phase::stepping, Phase::terminated, Phase::failed},
@@ -255,12 +298,12 @@ FMI2_EXPORT fmi2Status fmi2GetString(fmi2Component c, const fmi2ValueReference[]
 }
 
 FMI2_EXPORT fmi2Status fmi2SetReal(fmi2Component c, const fmi2ValueReference vr[], size_t n, const fmi2Real value[]) {
-  return set_values(c, vr, n, value, BaseType::real, "fmi2SetReal", [](const Variable& v, double x) { *v.real = x; });
+  return set_values(c, vr, n, value, BaseType::real, "fmi2SetReal", [](const VariableTable::Slot& v, double x) { *v.real = x; });
 }
 FMI2_EXPORT fmi2Status fmi2SetInteger(fmi2Component c, const fmi2ValueReference vr[], size_t n,
                                       const fmi2Integer value[]) {
   return set_values(c, vr, n, value, BaseType::integer, "fmi2SetInteger",
-                    [](const Variable& v, int x) { *v.integer = x; });
+                    [](const VariableTable::Slot& v, int x) { *v.integer = x; });
 }
 FMI2_EXPORT fmi2Status fmi2SetBoolean(fmi2Component c, const fmi2ValueReference[], size_t n, const fmi2Boolean[]) {
   return guarded(c, "fmi2SetBoolean", {Phase::instantiated, Phase::initialization, Phase::stepping},
@@ -285,6 +328,7 @@ FMI2_EXPORT fmi2Status fmi2GetFMUstate(fmi2Component c, fmi2FMUstate* state) {
     if (!state) throw FmuError("null FMUstate pointer");
     auto* saved = static_cast<SavedState*>(*state);
     if (!saved) saved = new SavedState;
+    in.component->settle();
     saved->bytes = in.component->save();
     saved->phase = in.phase;
     saved->time_s = in.time_s;
@@ -356,6 +400,7 @@ FMI2_EXPORT fmi2Status fmi2DeSerializeFMUstate(fmi2Component c, const fmi2Byte b
     std::memcpy(&saved->time_s, &t, 8);
     saved->bytes.assign(reinterpret_cast<const uint8_t*>(bytes) + 9, reinterpret_cast<const uint8_t*>(bytes) + size);
     // Check the bytes now (on a copy of the instance's state), not when the master restores them.
+    in.component->settle();
     const std::vector<uint8_t> current = in.component->save();
     in.component->restore(saved->bytes);
     in.component->restore(current);

@@ -64,11 +64,20 @@ class VariableTable {
       }
       attributes(v, role);
       description_.push_back(describe(member));
+      slots_.push_back(Slot{v.real, v.integer, v.type, v.causality});
       vars_.push_back(std::move(v));
     });
   }
 
   const std::vector<Variable>& variables() const { return vars_; }
+  // What fmi2Get/Set need of a variable, compact (the hot path of every communication step).
+  struct Slot {
+    double* real;
+    int32_t* integer;
+    BaseType type;
+    Causality causality;
+  };
+  const Slot* slot(uint32_t vr) const { return vr < slots_.size() ? &slots_[vr] : nullptr; }
   const char* description(uint32_t vr) const { return description_[vr]; }
   const Variable* find(uint32_t vr) const { return vr < vars_.size() ? &vars_[vr] : nullptr; }
   const Variable* find(const std::string& name) const;
@@ -76,6 +85,7 @@ class VariableTable {
  private:
   static void attributes(Variable& v, Role role);
   std::vector<Variable> vars_;
+  std::vector<Slot> slots_;
   std::vector<const char*> description_;
 };
 

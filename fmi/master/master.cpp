@@ -1,5 +1,6 @@
 #include "fmi/master/master.hpp"
 
+#include <bit>
 #include <cmath>
 #include <cstdarg>
 #include <cstdio>
@@ -54,6 +55,9 @@ struct Master::Instance {
   std::vector<double> source_real, target_real;
   std::vector<int> source_int, target_int;
   std::vector<std::size_t> links_in;   // the links into this instance
+  // Inputs changed since they were last set (Jacobi sets only those: an FMU keeps an input's value
+  // until it is set again, FMI 2.0 section 4.2.1). True at first: every input is set once.
+  bool real_inputs_changed = true, int_inputs_changed = true;
   Instance() : callbacks{logger, nullptr, nullptr, nullptr, &sink} {}
 };
 
@@ -63,8 +67,8 @@ struct Master::Link {
   std::size_t from_slot = 0, to_slot = 0;   // in the source's source_* and the target's target_* arrays
 };
 
-void Master::check(int status, const Instance& in, const std::string& call) const {
-  if (status == fmi2OK || status == fmi2Warning) return;
+void Master::fail(int status, const Instance& in, const std::string& call) const {
+  if (status == fmi2Warning) return;
   const std::string logged = in.sink.last_error.empty() ? in.sink.last : in.sink.last_error;
   throw InputError(in.library->path() + ": instance " + in.label,
                    call + " returned " + status_name(status) + (logged.empty() ? "" : ": " + logged));
@@ -129,6 +133,14 @@ Master::Master(const MultiModel& mm, const CoSimConfig& config, Algorithm algori
     in->target_real.resize(in->target_real_vr.size());
     in->target_int.resize(in->target_int_vr.size());
   }
+  for (const Link& l : links_) {   // the buffers keep their addresses from here on
+    Instance& src = *instances_[l.from];
+    Instance& dst = *instances_[l.to];
+    if (l.type == VarType::real)
+      real_copies_.push_back({&src.source_real[l.from_slot], &dst.target_real[l.to_slot], &dst.real_inputs_changed});
+    else
+      int_copies_.push_back({&src.source_int[l.from_slot], &dst.target_int[l.to_slot], &dst.int_inputs_changed});
+  }
   for (const Parameter& p : mm.parameters) {
     const auto [k, v] = variable(p.port, p.where);
     if (v->causality != "parameter" && v->causality != "input")
@@ -163,12 +175,13 @@ Master::Master(const MultiModel& mm, const CoSimConfig& config, Algorithm algori
       const int x = p.value != 0 ? fmi2True : fmi2False;
       status = in.library->api().set_boolean(in.component, &vr, 1, &x);
     }
-    check(status, in, "setting parameter " + p.port.variable + " (" + mm.file + ": " + p.where + ")");
+    if (status != fmi2OK) fail(status, in, "setting parameter " + p.port.variable + " (" + mm.file + ": " + p.where + ")");
   }
   for (auto& in : instances_)
     check(in->library->api().enter_initialization_mode(in->component), *in, "fmi2EnterInitializationMode");
   for (auto& in : instances_)
     check(in->library->api().exit_initialization_mode(in->component), *in, "fmi2ExitInitializationMode");
+  for (auto& in : instances_) fetch_outputs(*in);
   for (std::size_t k = 0; k < instances_.size(); ++k) {
     for (const ModelVariable& v : instances_[k]->library->description().variables) {
       if (v.causality != "output" || (v.type != VarType::real && v.type != VarType::integer)) continue;
@@ -188,59 +201,79 @@ Master::~Master() {
 
 double Master::time_s() const { return config_.start_s + static_cast<double>(steps_) * config_.step_s; }
 
-void Master::fetch_sources() {
-  for (auto& in : instances_) {
-    const Fmi2Functions& api = in->library->api();
-    if (!in->source_real_vr.empty())
-      check(api.get_real(in->component, in->source_real_vr.data(), in->source_real_vr.size(), in->source_real.data()), *in,
-            "fmi2GetReal");
-    if (!in->source_int_vr.empty())
-      check(api.get_integer(in->component, in->source_int_vr.data(), in->source_int_vr.size(), in->source_int.data()), *in,
-            "fmi2GetInteger");
-  }
+void Master::fetch_outputs(Instance& in) {
+  const Fmi2Functions& api = in.library->api();
+  if (!in.source_real_vr.empty())
+    check(api.get_real(in.component, in.source_real_vr.data(), in.source_real_vr.size(), in.source_real.data()), in,
+          "fmi2GetReal");
+  if (!in.source_int_vr.empty())
+    check(api.get_integer(in.component, in.source_int_vr.data(), in.source_int_vr.size(), in.source_int.data()), in,
+          "fmi2GetInteger");
 }
 
-// Sets the target's inputs from the sources' values fetched (latest: fetched now, one by one).
-void Master::set_inputs(std::size_t target, bool latest) {
+// Sets the target's inputs from its sources' outputs as they are now, fetched one by one
+// (Gauss-Seidel: a source stepped earlier in this step shows its new value).
+void Master::set_inputs(std::size_t target) {
   Instance& dst = *instances_[target];
   for (const std::size_t li : dst.links_in) {
     const Link& l = links_[li];
     Instance& src = *instances_[l.from];
     if (l.type == VarType::real) {
-      if (latest)
-        check(src.library->api().get_real(src.component, &src.source_real_vr[l.from_slot], 1, &src.source_real[l.from_slot]),
+      check(src.library->api().get_real(src.component, &src.source_real_vr[l.from_slot], 1, &src.source_real[l.from_slot]),
               src, "fmi2GetReal");
       dst.target_real[l.to_slot] = src.source_real[l.from_slot];
     } else {
-      if (latest)
-        check(src.library->api().get_integer(src.component, &src.source_int_vr[l.from_slot], 1, &src.source_int[l.from_slot]),
+      check(src.library->api().get_integer(src.component, &src.source_int_vr[l.from_slot], 1, &src.source_int[l.from_slot]),
               src, "fmi2GetInteger");
       dst.target_int[l.to_slot] = src.source_int[l.from_slot];
     }
   }
+  push_inputs(dst, false);
+}
+
+void Master::push_inputs(Instance& dst, bool only_changed) {
   const Fmi2Functions& api = dst.library->api();
-  if (!dst.target_real_vr.empty())
+  if (!dst.target_real_vr.empty() && (dst.real_inputs_changed || !only_changed))
     check(api.set_real(dst.component, dst.target_real_vr.data(), dst.target_real_vr.size(), dst.target_real.data()), dst,
           "fmi2SetReal");
-  if (!dst.target_int_vr.empty())
+  if (!dst.target_int_vr.empty() && (dst.int_inputs_changed || !only_changed))
     check(api.set_integer(dst.component, dst.target_int_vr.data(), dst.target_int_vr.size(), dst.target_int.data()), dst,
           "fmi2SetInteger");
+  dst.real_inputs_changed = dst.int_inputs_changed = false;
 }
 
 void Master::step() {
   const double t = time_s();
   const auto do_step = [&](Instance& in) {
+    const int status = in.library->api().do_step(in.component, t, config_.step_s, fmi2True);
+    if (status == fmi2OK) return;
     char when[64];
     std::snprintf(when, sizeof when, "fmi2DoStep at t = %.17g s", t);
-    check(in.library->api().do_step(in.component, t, config_.step_s, fmi2True), in, when);
+    fail(status, in, when);
   };
   if (algorithm_ == Algorithm::jacobi) {
-    fetch_sources();
-    for (std::size_t k = 0; k < instances_.size(); ++k) set_inputs(k, false);
-    for (auto& in : instances_) do_step(*in);
+    // The source buffers hold every output as of t (fetched after each instance's last step, or
+    // after initialisation): copied to the inputs first, so stepping one instance cannot change
+    // another's inputs. Each instance is then set, stepped and read in one visit (its data stays
+    // in the cache).
+    for (const Copy<double>& c : real_copies_) {
+      if (std::bit_cast<uint64_t>(*c.to) == std::bit_cast<uint64_t>(*c.from)) continue;
+      *c.to = *c.from;
+      *c.changed = true;
+    }
+    for (const Copy<int>& c : int_copies_) {
+      if (*c.to == *c.from) continue;
+      *c.to = *c.from;
+      *c.changed = true;
+    }
+    for (auto& in : instances_) {
+      push_inputs(*in, true);
+      do_step(*in);
+      fetch_outputs(*in);
+    }
   } else {
     for (std::size_t k = 0; k < instances_.size(); ++k) {
-      set_inputs(k, true);
+      set_inputs(k);
       do_step(*instances_[k]);
     }
   }

@@ -56,9 +56,13 @@ class Master {
  private:
   struct Instance;
   struct Link;
-  void check(int status, const Instance& in, const std::string& call) const;
-  void set_inputs(std::size_t target, bool latest);
-  void fetch_sources();
+  void check(int status, const Instance& in, const char* call) const {
+    if (status != 0 /* fmi2OK */) fail(status, in, call);
+  }
+  void fail(int status, const Instance& in, const std::string& call) const;   // unless a warning: throws
+  void set_inputs(std::size_t target);
+  void push_inputs(Instance& dst, bool only_changed);
+  void fetch_outputs(Instance& in);
 
   Algorithm algorithm_;
   CoSimConfig config_;
@@ -67,6 +71,15 @@ class Master {
   std::vector<std::unique_ptr<FmuLibrary>> libraries_;
   std::vector<std::unique_ptr<Instance>> instances_;
   std::vector<Link> links_;
+  // Jacobi's copies, source value to target input, as raw pointers into the instances' buffers.
+  template <class T>
+  struct Copy {
+    const T* from;
+    T* to;
+    bool* changed;   // the target's flag: its inputs of this type differ from what it was last given
+  };
+  std::vector<Copy<double>> real_copies_;
+  std::vector<Copy<int>> int_copies_;
   std::vector<std::string> output_names_;
   std::vector<Port> outputs_;
 };

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <unordered_map>
 
 #include "spec/util/hana_json.hpp"
 #include "spec/util/input_error.hpp"
@@ -53,11 +54,11 @@ MultiModel read_multimodel(const std::string& path) {
     throw InputError(path + ": " + where, "FMU " + p.fmu + " is not in \"fmus\"");
   };
   std::vector<std::pair<std::string, std::string>> seen;   // in order of appearance
+  std::unordered_map<std::string, bool> seen_label;
   const auto note_instance = [&](const PortName& p) {
-    for (const auto& s : seen)
-      if (s.first == p.fmu && s.second == p.instance) return;
-    seen.emplace_back(p.fmu, p.instance);
+    if (seen_label.emplace(p.fmu + "." + p.instance, true).second) seen.emplace_back(p.fmu, p.instance);
   };
+  std::unordered_map<std::string, std::string> target_at;   // input -> where it is connected
   if (j.contains("connections")) {
     if (!j["connections"].is_object()) throw InputError(path + ": connections", "expected an object");
     for (const auto& [from, targets] : j["connections"].items()) {
@@ -72,9 +73,8 @@ MultiModel read_multimodel(const std::string& path) {
         const PortName dst = port_name(targets[k].get<std::string>(), path, w);
         known_fmu(dst, w);
         note_instance(dst);
-        for (const Connection& c : mm.connections)
-          if (c.to.text() == dst.text())
-            throw InputError(path + ": " + w, "input " + dst.text() + " is connected twice (also at " + c.where + ")");
+        const auto [at, fresh] = target_at.emplace(dst.text(), w);
+        if (!fresh) throw InputError(path + ": " + w, "input " + dst.text() + " is connected twice (also at " + at->second + ")");
         mm.connections.push_back(Connection{src, dst, w});
       }
     }

@@ -35,10 +35,6 @@ struct Exploration::State {
   void step_robot(std::size_t r, int32_t env_output, const Point_m& waypoint);
 };
 
-namespace {
-bool negative_zero(double v) { return v == 0 && std::signbit(v); }
-}  // namespace
-
 // One robot's controller and body from the previous outputs. A body whose servos are both 0
 // stays exactly where it is (the spec's straight-line branch adds +-0), so the step is skipped;
 // -0.0 coordinates, where adding +0 would change the bits, take the full formula.
@@ -46,9 +42,7 @@ void Exploration::State::step_robot(std::size_t r, int32_t env_output, const Poi
   const ControllerState before = ctrl[r];
   const BodyState pose = body[r];
   ctrl[r] = controller_step(robot, before, ControllerInputs{pose, waypoint, env_output});
-  const bool still = before.servo_left == 0 && before.servo_right == 0 && !negative_zero(pose.x_m) &&
-                     !negative_zero(pose.y_m) && !negative_zero(pose.theta_rad);
-  if (still) return;
+  if (body_stays(pose, before.servo_left, before.servo_right)) return;
   const BodyStep next = body_step_with_heading(robot, pose, heading[r], before.servo_left, before.servo_right,
                                                env.scenario().params.step_size);
   body[r] = next.state;

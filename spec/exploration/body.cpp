@@ -6,6 +6,15 @@
 
 namespace swarmcheck::exploration {
 
+namespace {
+bool negative_zero(double v) { return v == 0 && std::signbit(v); }
+}  // namespace
+
+bool body_stays(const BodyState& s, double servo_left, double servo_right) {
+  return servo_left == 0 && servo_right == 0 && !negative_zero(s.x_m) && !negative_zero(s.y_m) &&
+         !negative_zero(s.theta_rad);
+}
+
 Heading heading_of(double theta_rad) { return Heading{std::cos(theta_rad), std::sin(theta_rad)}; }
 
 BodyState body_step(const RobotParams& rp, const BodyState& s, double servo_left,

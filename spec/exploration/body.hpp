@@ -17,6 +17,11 @@ namespace swarmcheck::exploration {
 BodyState body_step(const RobotParams& rp, const BodyState& s, double servo_left,
                     double servo_right, double dt_s);
 
+// Whether body_step(rp, s, servo_left, servo_right, dt_s) returns s exactly, known without the
+// trigonometry: both servos are 0 and no coordinate is -0.0 (v and omega are then +-0, and adding
+// +-0 leaves the bits of any value but -0.0). Callers skip the step of a robot standing still.
+bool body_stays(const BodyState& s, double servo_left, double servo_right);
+
 // cos and sin of a heading. A caller that keeps them from the step that produced theta (the same
 // function of the same double gives the same bits) skips the trigonometry of a straight drive.
 struct Heading {
