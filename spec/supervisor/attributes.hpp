@@ -1,5 +1,5 @@
 #pragma once
-// Event attributes across the files of one command (SPEC.md B2). A `.fsm` file may leave an
+// Event attributes across the files of one command (SPEC.md 13.1). A `.fsm` file may leave an
 // event's c|uc or o|uo unstated; what the files of one command (plants first, then
 // specifications, in command-line order) state is pooled:
 //   - an attribute stated by some file is the event's attribute in every file of the command;

@@ -1,5 +1,5 @@
 #pragma once
-// A given supervisor S of a plant G (SPEC.md B4): the closed loop G || S, its controllability and
+// A given supervisor S of a plant G (SPEC.md 13.2): the closed loop G || S, its controllability and
 // its nonblocking, each with a witness when it fails.
 //
 //   S controllable for G  iff  no reachable state (x, y) of G || S has an uncontrollable event e

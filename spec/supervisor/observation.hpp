@@ -1,5 +1,5 @@
 #pragma once
-// Partial observation (SPEC.md B5): events marked `uo` are not seen by a supervisor.
+// Partial observation (SPEC.md 13.3): events marked `uo` are not seen by a supervisor.
 //
 //   P            the natural projection onto the observable events: erases every `uo` event.
 //   UR(X)        least Y with X in Y and ustep(Y) in Y: the states X reaches by `uo` events alone.
@@ -16,7 +16,7 @@
 //                one moves the first (then, separately, the second) alone. The witness is the
 //                first violating pair in that breadth-first order, with its two words and the
 //                least violating event.
-//   Normal synthesis  see supcon_normal in model/supervisor/observation.hpp: the greatest set of
+//   Normal synthesis  SPEC.md 13.3 (model/supervisor/observation.hpp runs it): the greatest set of
 //                observer classes of G || S that are free of leaks, controllable and nonblocking.
 #include <optional>
 #include <string>

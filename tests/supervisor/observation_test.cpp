@@ -118,7 +118,7 @@ RC_GTEST_PROP(SupervisorObservation, ImplNormalSupervisorEqualsModelExactly, ())
 
 // s in L(R) and s' in L(G) with P(s) = P(s') imply s' in L(R): a search over (state of R after
 // s, state of G after s', state of R after s' or none), moving on one projection. s' is a word
-// of the plant: it has no event the plant does not have (SPEC.md B5).
+// of the plant: it has no event the plant does not have (SPEC.md 13.3).
 bool is_normal(const Automaton& g, const Automaton& r) {
   if (r.states.empty()) return true;
   using Node = std::tuple<sv::State, sv::State, std::optional<sv::State>>;
