@@ -248,7 +248,9 @@ int run_synth(const FsmOptions& o) {
     fmt::print("{}: {}supervisor of {} states, {} transitions{} (plant {} states, spec {} states, "
                "spec {}controllable as given){}\n",
                o.out, s.unobservable.empty() ? "" : "normal ", s.states, s.transitions,
-               empty ? " (EMPTY: no controllable nonblocking behaviour exists)" : "",
+               !empty                   ? ""
+               : s.unobservable.empty() ? " (EMPTY: no controllable nonblocking behaviour exists)"
+                                        : " (EMPTY: no controllable, normal, nonblocking behaviour exists)",
                s.plant_states, s.spec_states, s.controllable ? "" : "not ",
                s.unobservable.empty() ? ""
                                       : fmt::format("; unobservable events: {}",

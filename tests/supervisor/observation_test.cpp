@@ -11,6 +11,7 @@
 #include "impl/supervisor/fsm_io.hpp"
 #include "impl/supervisor/operations.hpp"
 #include "model/supervisor/observation.hpp"
+#include "swarmcheck/supervisor.hpp"
 
 // Counterexamples shown as .fsm text.
 namespace swarmcheck::supervisor {
@@ -208,6 +209,34 @@ TEST(SupervisorObservation, AnUnseenFaultForcesTheSupervisorToDisableWhatItForbi
   const Automaton obs = model::observer(plant);
   EXPECT_EQ(obs.states, (Words{"{p0,p1}", "{p2,p3}"}));
   EXPECT_EQ(impl::write_fsm(obs), impl::write_fsm(impl::decompile(impl::observer(impl::compile(plant)))));
+}
+
+// The thesis's plant and specification with region entries made unobservable: impl and model
+// agree state for state; unseen b7e changes nothing (37 states, as with full observation); with
+// no region entry seen, collision avoidance cannot be enforced and the supervisor is empty.
+TEST(SupervisorObservation, ThesisWithUnseenRegionEntries) {
+  const std::string dir = SWARMCHECK_SCENARIOS "/thesis/components/";
+  std::vector<std::string> files;
+  for (const char* f : {"region_a", "tasks_a", "region_b", "tasks_b", "avoidance", "located", "completion"})
+    files.push_back(dir + f + ".fsm");
+  const std::vector<Automaton> all = sv::read_fsm_files(files);
+  auto hidden = [&](const std::set<std::string>& unseen) {
+    std::map<sv::Event, sv::EventAttr> attrs;
+    for (const auto& a : all)
+      for (auto [e, attr] : a.events) attrs[e] = {attr.controllable, !unseen.count(e)};
+    std::vector<Automaton> parts;
+    for (const auto& a : all) parts.push_back(sv::with_attributes(a, attrs));
+    const Automaton spec = model::product({parts[4], parts[5], parts[6]}, {"avoidance", "located", "completion"});
+    parts.resize(4);
+    EXPECT_FALSE(diff_supcon_normal(parts, spec).has_value());
+    const Automaton plant = model::product(parts, {"region_a", "tasks_a", "region_b", "tasks_b"});
+    return std::make_pair(plant, model::supcon_normal(plant, spec));
+  };
+  const auto [plant, one] = hidden({"b7e"});
+  EXPECT_EQ(one.states.size(), 37u);
+  EXPECT_TRUE(model::is_controllable(plant, one));
+  EXPECT_TRUE(is_normal(plant, one));
+  EXPECT_TRUE(hidden({"a5e", "a6e", "a7e", "a8e", "b5e", "b6e", "b7e", "b8e"}).second.states.empty());
 }
 
 TEST(SupervisorObservation, AStateNameWithACommaIsRefusedByTheObserver) {
