@@ -356,7 +356,8 @@ void add_fsm_verb(CLI::App& app, int& exit_code) {
   wire(prod, run_product);
 
   auto* synth = fsm->add_subcommand(
-      "synth", "supremal controllable nonblocking supervisor of plants for specifications");
+      "synth", "supremal controllable nonblocking supervisor of plants for specifications (also "
+              "normal when an event is uo)");
   synth->add_option("--plant", o->plants, "plant component .fsm files")->required()->expected(1, -1);
   synth->add_option("--spec", o->specs, "specification .fsm files")->required()->expected(1, -1);
   synth->add_option("-o,--output", o->out, "the supervisor .fsm to write")->required();
