@@ -26,14 +26,16 @@ bin=${5:-}
 support=""
 case $name in
   fsm)
-    sources="impl/supervisor/fsm_read.cpp impl/supervisor/fsm.cpp impl/supervisor/fsm_write.cpp spec/supervisor/automaton.cpp"
+    sources="impl/supervisor/fsm_read.cpp impl/supervisor/fsm.cpp impl/supervisor/fsm_write.cpp spec/supervisor/automaton.cpp
+      spec/supervisor/attributes.cpp"
     libs="" max_len=8192 ;;
   scenario)
     sources="spec/exploration/scenario.cpp"
     libs="" max_len=4096 ;;
   mission)
     sources="spec/mission/mission.cpp spec/mission/mission_check.cpp spec/mission/plan.cpp
-      spec/supervisor/automaton.cpp spec/supervisor/semantics.cpp impl/supervisor/fsm_read.cpp impl/supervisor/fsm.cpp"
+      spec/supervisor/automaton.cpp spec/supervisor/semantics.cpp spec/supervisor/attributes.cpp
+      impl/supervisor/fsm_read.cpp impl/supervisor/fsm.cpp"
     libs="-lfmt" max_len=4096 ;;
   trace)
     sources="conformance/exploration/trace_io.cpp spec/exploration/scenario.cpp"

@@ -10,7 +10,9 @@
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
+#include <set>
 
+#include "apps/swarmcheck/fsm_control_verb.hpp"
 #include "apps/swarmcheck/verb.hpp"
 #include "spec/util/hana_json.hpp"
 #include "conformance/supervisor/engine.hpp"
@@ -42,19 +44,32 @@ struct FsmOptions {
 
 void print_json(const Json& j) { fmt::print("{}\n", json_io::dump_text(j, 2)); }
 
+// The files of one command are read together: an attribute one leaves unstated comes from
+// another that states it (spec/supervisor/attributes.hpp).
 std::vector<Automaton> read_all(const std::vector<std::string>& paths) {
-  std::vector<Automaton> out;
-  for (const auto& p : paths) out.push_back(sv::read_fsm_file(p));
-  return out;
+  return sv::read_fsm_files(paths);
 }
 
 // The library's engine works on the compact form (is::Fsm) from the file to the output: no
 // Automaton value, whose maps of strings cost gigabytes at millions of states. The model's
 // engine works on values; both print through the same code, so their outputs are alike.
 std::vector<is::Fsm> read_all_compact(const std::vector<std::string>& paths) {
-  std::vector<is::Fsm> out;
-  for (const auto& p : paths) out.push_back(is::read_fsm_compact_file(p));
-  return out;
+  return is::read_fsm_compact_files(paths);
+}
+
+// Plants then specifications, read together, split back.
+template <class T>
+std::pair<std::vector<T>, std::vector<T>> split_plants_specs(std::vector<T> all, std::size_t plants) {
+  std::vector<T> specs(std::make_move_iterator(all.begin() + static_cast<std::ptrdiff_t>(plants)),
+                       std::make_move_iterator(all.end()));
+  all.resize(plants);
+  return {std::move(all), std::move(specs)};
+}
+
+std::vector<std::string> plants_then_specs(const FsmOptions& o) {
+  std::vector<std::string> all = o.plants;
+  all.insert(all.end(), o.specs.begin(), o.specs.end());
+  return all;
 }
 
 std::vector<const is::Fsm*> pointers(const std::vector<is::Fsm>& fs) {
@@ -165,30 +180,53 @@ int run_product(const FsmOptions& o) {
 }
 
 // What `fsm synth` prints, from either engine.
+// With `uo` events in the plant or the specification, synth gives the supremal controllable and
+// normal supervisor (spec/supervisor/observation.hpp); without, the supremal controllable one.
 struct SynthFacts {
   std::size_t plant_states = 0, spec_states = 0, states = 0, transitions = 0, marked = 0;
   bool controllable = true;
+  std::vector<std::string> unobservable;   // the `uo` events of plant and spec, in name order
 };
 
+std::vector<std::string> unobservable_of(const is::Fsm& plant, const is::Fsm& spec) {
+  std::set<std::string> out;
+  for (const is::Fsm* f : {&plant, &spec})
+    for (is::EventId e = 0; e < f->event_count(); ++e)
+      if (!f->observable[e]) out.insert(f->event_names[e]);
+  return {out.begin(), out.end()};
+}
+
 SynthFacts synth_compact(const FsmOptions& o) {
-  const std::vector<is::Fsm> plants = read_all_compact(o.plants);
+  const auto [plants, specs] = split_plants_specs(read_all_compact(plants_then_specs(o)), o.plants.size());
   const is::Fsm plant = is::product(pointers(plants), o.plants, o.budgets.memory_bytes);
-  const std::vector<is::Fsm> specs = read_all_compact(o.specs);
   const is::Fsm spec = is::product(pointers(specs), o.specs, o.budgets.memory_bytes);
+  const std::vector<std::string> unobservable = unobservable_of(plant, spec);
+  if (!unobservable.empty()) {
+    const is::Fsm sup = is::supcon_normal(plant, spec);
+    is::write_fsm_compact_file(o.out, sup, is::name_speller(sup));
+    return {plant.state_count(), spec.state_count(), sup.state_count(), sup.edge_count(),
+            count_set(sup.marked), is::is_controllable(plant, spec), unobservable};
+  }
   const is::Synthesis sup = is::synthesize(plant, spec, o.budgets.memory_bytes);
   is::write_fsm_compact_file(o.out, sup.supervisor, is::name_speller(sup.supervisor, &sup.names));
   return {plant.state_count(), spec.state_count(), sup.supervisor.state_count(),
-          sup.supervisor.edge_count(), count_set(sup.supervisor.marked), sup.spec_controllable};
+          sup.supervisor.edge_count(), count_set(sup.supervisor.marked), sup.spec_controllable, {}};
 }
 
 SynthFacts synth_values(const FsmOptions& o, engines::Engine engine) {
-  const Automaton plant = engines::product(read_all(o.plants), o.plants, engine, o.budgets.memory_bytes);
-  const Automaton spec = engines::product(read_all(o.specs), o.specs, engine, o.budgets.memory_bytes);
-  const Automaton sup = engines::supcon(plant, spec, engine, o.budgets.memory_bytes);
+  const auto [plants, specs] = split_plants_specs(read_all(plants_then_specs(o)), o.plants.size());
+  const Automaton plant = engines::product(plants, o.plants, engine, o.budgets.memory_bytes);
+  const Automaton spec = engines::product(specs, o.specs, engine, o.budgets.memory_bytes);
+  std::set<std::string> uo;
+  for (const Automaton* a : {&plant, &spec})
+    for (const auto& e : sv::unobservable_events(a->events)) uo.insert(e);
+  const Automaton sup = uo.empty() ? engines::supcon(plant, spec, engine, o.budgets.memory_bytes)
+                                   : engines::supcon_normal(plant, spec, engine);
   const bool controllable = engines::is_controllable(plant, spec, engine);
   sv::write_fsm_file(o.out, sup);
   return {plant.states.size(), spec.states.size(), sup.states.size(),
-          swarmcheck::supervisor::transition_count(sup), sup.marked.size(), controllable};
+          swarmcheck::supervisor::transition_count(sup), sup.marked.size(), controllable,
+          {uo.begin(), uo.end()}};
 }
 
 int run_synth(const FsmOptions& o) {
@@ -203,13 +241,20 @@ int run_synth(const FsmOptions& o) {
                 {"states", s.states},
                 {"transitions", s.transitions},
                 {"marked", s.marked},
-                {"empty", empty}});
+                {"empty", empty},
+                {"normal", !s.unobservable.empty()},
+                {"unobservable_events", s.unobservable}});
   else
-    fmt::print("{}: supervisor of {} states, {} transitions{} (plant {} states, spec {} states, "
-               "spec {}controllable as given)\n",
-               o.out, s.states, s.transitions,
-               empty ? " (EMPTY: no controllable nonblocking behaviour exists)" : "",
-               s.plant_states, s.spec_states, s.controllable ? "" : "not ");
+    fmt::print("{}: {}supervisor of {} states, {} transitions{} (plant {} states, spec {} states, "
+               "spec {}controllable as given){}\n",
+               o.out, s.unobservable.empty() ? "" : "normal ", s.states, s.transitions,
+               !empty                   ? ""
+               : s.unobservable.empty() ? " (EMPTY: no controllable nonblocking behaviour exists)"
+                                        : " (EMPTY: no controllable, normal, nonblocking behaviour exists)",
+               s.plant_states, s.spec_states, s.controllable ? "" : "not ",
+               s.unobservable.empty() ? ""
+                                      : fmt::format("; unobservable events: {}",
+                                                    fmt::join(s.unobservable, " ")));
   return 0;
 }
 
@@ -311,7 +356,8 @@ void add_fsm_verb(CLI::App& app, int& exit_code) {
   wire(prod, run_product);
 
   auto* synth = fsm->add_subcommand(
-      "synth", "supremal controllable nonblocking supervisor of plants for specifications");
+      "synth", "supremal controllable nonblocking supervisor of plants for specifications (also "
+              "normal when an event is uo)");
   synth->add_option("--plant", o->plants, "plant component .fsm files")->required()->expected(1, -1);
   synth->add_option("--spec", o->specs, "specification .fsm files")->required()->expected(1, -1);
   synth->add_option("-o,--output", o->out, "the supervisor .fsm to write")->required();
@@ -332,6 +378,8 @@ void add_fsm_verb(CLI::App& app, int& exit_code) {
   cmp->add_flag("--json", o->json, "print JSON");
   add_engine(cmp, *o);
   wire(cmp, run_compare);
+
+  add_fsm_control_subcommands(fsm, exit_code);
 }
 
 }  // namespace swarmcheck::cli

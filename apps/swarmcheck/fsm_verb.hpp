@@ -1,5 +1,6 @@
 #pragma once
-// `swarmcheck fsm check|product|synth|export|compare`: discrete-event automata in UMDES .fsm files
+// `swarmcheck fsm check|product|synth|export|compare` (and controllable|observable|project,
+// fsm_control_verb.hpp): discrete-event automata in UMDES .fsm files
 // (DESIGN.md B1-B2; docs/supervisor.md has an example of each).
 #include <CLI/CLI.hpp>
 

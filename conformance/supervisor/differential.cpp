@@ -5,6 +5,8 @@
 
 #include "impl/supervisor/fsm_io.hpp"
 #include "impl/supervisor/operations.hpp"
+#include "model/supervisor/control.hpp"
+#include "model/supervisor/observation.hpp"
 #include "model/supervisor/operations.hpp"
 
 namespace swarmcheck::conformance::supervisor {
@@ -152,6 +154,41 @@ std::string shown(const swarmcheck::supervisor::Inclusion& i) {
 }
 
 }  // namespace
+
+std::optional<std::string> diff_control(const std::vector<Automaton>& plant_parts, const Automaton& sup) {
+  const auto [ig, mg] = both_products(plant_parts);
+  const auto ir = impl::control_report(ig, impl::compile(sup));
+  const auto mr = model::control_report(mg, sup);
+  auto shown_report = [](const swarmcheck::supervisor::ControlReport& r) {
+    return std::to_string(r.closed_loop_states) + " states, controllable " + (r.controllable ? "yes" : "no") +
+           " " + words(r.witness) + " " + r.disabled_event + ", nonblocking " + (r.nonblocking ? "yes" : "no") +
+           " " + words(r.blocking_witness);
+  };
+  return differ("control report", shown_report(ir), shown_report(mr));
+}
+
+std::optional<std::string> diff_observer(const Automaton& a) {
+  return diff_exact("observer", impl::observer(impl::compile(a)), model::observer(a));
+}
+
+std::optional<std::string> diff_observability(const std::vector<Automaton>& plant_parts, const Automaton& spec) {
+  const auto [ig, mg] = both_products(plant_parts);
+  const auto ir = impl::observability(ig, impl::compile(spec));
+  const auto mr = model::observability(mg, spec);
+  auto shown_report = [](const swarmcheck::supervisor::ObservabilityReport& r) {
+    return std::string("observable ") + (r.observable ? "yes" : "no") + " " + words(r.word) + " " +
+           words(r.twin) + " " + r.event;
+  };
+  return differ("observability", shown_report(ir), shown_report(mr));
+}
+
+std::optional<std::string> diff_supcon_normal(const std::vector<Automaton>& plant_parts, const Automaton& spec,
+                                              BuiltSizes* sizes) {
+  const auto [ig, mg] = both_products(plant_parts);
+  const Automaton msup = model::supcon_normal(mg, spec);
+  if (sizes) *sizes = BuiltSizes{mg.states.size(), msup.states.size()};
+  return diff_exact("normal supervisor", impl::supcon_normal(ig, impl::compile(spec)), msup);
+}
 
 std::optional<std::string> diff_inclusion(const Automaton& a, const Automaton& b) {
   const auto ii = impl::language_inclusion(impl::compile(a), impl::compile(b));

@@ -40,6 +40,16 @@ std::optional<std::string> diff_product(const std::vector<Automaton>& parts, Bui
 std::optional<std::string> diff_synthesis(const std::vector<Automaton>& plant_parts, const Automaton& spec,
                                           BuiltSizes* sizes = nullptr);
 
+// sup as a supervisor of the plant (the product of plant_parts): verdicts and witnesses exactly.
+std::optional<std::string> diff_control(const std::vector<Automaton>& plant_parts, const Automaton& sup);
+
+// Partial observation: the observer of a, exactly; observability of spec for the plant (verdict
+// and witness words); the controllable normal supervisor, exactly.
+std::optional<std::string> diff_observer(const Automaton& a);
+std::optional<std::string> diff_observability(const std::vector<Automaton>& plant_parts, const Automaton& spec);
+std::optional<std::string> diff_supcon_normal(const std::vector<Automaton>& plant_parts, const Automaton& spec,
+                                              BuiltSizes* sizes = nullptr);
+
 // L(a) in L(b) and Lm(a) in Lm(b), verdicts and witness words compared exactly.
 std::optional<std::string> diff_inclusion(const Automaton& a, const Automaton& b);
 

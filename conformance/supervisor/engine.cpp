@@ -1,5 +1,7 @@
 #include "conformance/supervisor/engine.hpp"
 
+#include "model/supervisor/control.hpp"
+#include "model/supervisor/observation.hpp"
 #include "model/supervisor/operations.hpp"
 
 namespace swarmcheck::conformance::supervisor {
@@ -45,8 +47,24 @@ bool is_controllable(const Automaton& plant, const Automaton& spec, Engine engin
                                  : lib::is_controllable(plant, spec);
 }
 
+lib::ControlReport control_report(const Automaton& plant, const Automaton& sup, Engine engine) {
+  return engine == Engine::model ? model::control_report(plant, sup) : lib::control_report(plant, sup);
+}
+
 Automaton supcon(const Automaton& plant, const Automaton& spec, Engine engine, std::uint64_t max_bytes) {
   return engine == Engine::model ? model::supcon(plant, spec) : lib::supcon(plant, spec, max_bytes);
+}
+
+Automaton observer(const Automaton& a, Engine engine) {
+  return engine == Engine::model ? model::observer(a) : lib::observer(a);
+}
+
+lib::ObservabilityReport observability(const Automaton& plant, const Automaton& spec, Engine engine) {
+  return engine == Engine::model ? model::observability(plant, spec) : lib::observability(plant, spec);
+}
+
+Automaton supcon_normal(const Automaton& plant, const Automaton& spec, Engine engine) {
+  return engine == Engine::model ? model::supcon_normal(plant, spec) : lib::supcon_normal(plant, spec);
 }
 
 lib::Inclusion language_inclusion(const Automaton& a, const Automaton& b, Engine engine) {

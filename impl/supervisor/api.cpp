@@ -42,8 +42,22 @@ bool is_controllable(const Automaton& plant, const Automaton& spec) {
   return is::is_controllable(is::compile(plant), is::compile(spec));
 }
 
+ControlReport control_report(const Automaton& plant, const Automaton& sup) {
+  return is::control_report(is::compile(plant), is::compile(sup));
+}
+
 Automaton supcon(const Automaton& plant, const Automaton& spec, std::uint64_t max_bytes) {
   return is::decompile(is::supcon(is::compile(plant), is::compile(spec), max_bytes));
+}
+
+Automaton observer(const Automaton& a) { return is::decompile(is::observer(is::compile(a))); }
+
+ObservabilityReport observability(const Automaton& plant, const Automaton& spec) {
+  return is::observability(is::compile(plant), is::compile(spec));
+}
+
+Automaton supcon_normal(const Automaton& plant, const Automaton& spec) {
+  return is::decompile(is::supcon_normal(is::compile(plant), is::compile(spec)));
 }
 
 Inclusion language_inclusion(const Automaton& a, const Automaton& b) {

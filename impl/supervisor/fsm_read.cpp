@@ -110,11 +110,12 @@ class Reader {
     check_bytes();
   }
 
-  Fsm read() {
+  Fsm read(swarmcheck::supervisor::Statements* stated) {
     const std::size_t n = read_count();
     for (std::size_t i = 0; i < n; ++i) read_block(i, n);
     read_trailer(n);
     check_targets();
+    if (stated) *stated = statements();
     return build();
   }
 
@@ -379,6 +380,20 @@ class Reader {
                                       "' is not a state (no block of that name in this file)");
   }
 
+  // Each event's attributes as this file states them, with the place of the first statement.
+  swarmcheck::supervisor::Statements statements() const {
+    swarmcheck::supervisor::Statements out;
+    auto where = [&](const Place& p) {
+      return source_ + ":" + std::to_string(p.line) + ":" + std::to_string(p.col);
+    };
+    for (const EventFacts& e : events_) {
+      auto& st = out[str(e.name)];
+      if (e.controllable) st.controllable = {*e.controllable, where(e.controllable_at)};
+      if (e.observable) st.observable = {*e.observable, where(e.observable_at)};
+    }
+    return out;
+  }
+
   // Events renumbered in name order, targets by state, each state's edges sorted by event.
   Fsm build() const {
     Fsm f;
@@ -438,13 +453,29 @@ class Reader {
 
 }  // namespace
 
-Fsm read_fsm_compact(std::string_view text, const std::string& source) {
-  return Reader(text, source).read();
+Fsm read_fsm_compact(std::string_view text, const std::string& source,
+                     swarmcheck::supervisor::Statements* stated) {
+  return Reader(text, source).read(stated);
 }
 
-Fsm read_fsm_compact_file(const std::string& path) {
+Fsm read_fsm_compact_file(const std::string& path, swarmcheck::supervisor::Statements* stated) {
   const std::string text = io_input::read_input_file(path, ".fsm file");
-  return read_fsm_compact(text, path);
+  return read_fsm_compact(text, path, stated);
+}
+
+std::vector<Fsm> read_fsm_compact_files(const std::vector<std::string>& paths) {
+  std::vector<Fsm> out;
+  std::vector<swarmcheck::supervisor::Statements> stated(paths.size());
+  for (std::size_t i = 0; i < paths.size(); ++i)
+    out.push_back(read_fsm_compact_file(paths[i], &stated[i]));
+  const auto attrs = swarmcheck::supervisor::resolve_attributes(stated);
+  for (Fsm& f : out)
+    for (EventId e = 0; e < f.event_count(); ++e) {
+      const auto& a = attrs.at(f.event_names[e]);
+      f.controllable[e] = a.controllable ? 1 : 0;
+      f.observable[e] = a.observable ? 1 : 0;
+    }
+  return out;
 }
 
 }  // namespace swarmcheck::impl::supervisor
@@ -457,6 +488,13 @@ Automaton read_fsm(std::string_view text, const std::string& source) {
 
 Automaton read_fsm_file(const std::string& path) {
   return impl::supervisor::decompile(impl::supervisor::read_fsm_compact_file(path));
+}
+
+std::vector<Automaton> read_fsm_files(const std::vector<std::string>& paths) {
+  std::vector<Automaton> out;
+  for (const auto& f : impl::supervisor::read_fsm_compact_files(paths))
+    out.push_back(impl::supervisor::decompile(f));
+  return out;
 }
 
 }  // namespace swarmcheck::supervisor

@@ -7,6 +7,8 @@
 #include <vector>
 
 #include "impl/supervisor/fsm.hpp"
+#include "spec/supervisor/control.hpp"
+#include "spec/supervisor/observation.hpp"
 #include "spec/supervisor/semantics.hpp"
 #include "swarmcheck/supervisor.hpp"
 
@@ -39,6 +41,14 @@ Product product_with_tuples(const std::vector<const Fsm*>& parts,
                             const std::vector<std::string>& names, std::uint64_t max_bytes = 0);
 
 bool is_controllable(const Fsm& plant, const Fsm& spec);
+inline constexpr EventId kNoEvent = UINT32_MAX;
+// For each state z of product = plant || spec (product_with_tuples, plant first): the least
+// uncontrollable event of plant (its id in plant) that plant enables at z's plant state and the
+// product disables at z, or kNoEvent.
+std::vector<EventId> disabled_uncontrollable(const Fsm& plant, const Product& product);
+// The checks of a given supervisor (spec/supervisor/control.hpp): one product, one pass for the
+// violations, one backward pass for blocking, witnesses read back along breadth-first parents.
+swarmcheck::supervisor::ControlReport control_report(const Fsm& plant, const Fsm& sup);
 // The supremal controllable nonblocking supervisor of plant for spec.
 Fsm supcon(const Fsm& plant, const Fsm& spec, std::uint64_t max_bytes = 0);
 // The same supervisor with its states left unnamed (spelled by `names` from (plant, spec) pairs;
@@ -50,6 +60,11 @@ struct Synthesis {
   bool spec_controllable = true;
 };
 Synthesis synthesize(const Fsm& plant, const Fsm& spec, std::uint64_t max_bytes = 0);
+
+// Partial observation (spec/supervisor/observation.hpp), state for state as the model's.
+Fsm observer(const Fsm& f);  // f must be named
+swarmcheck::supervisor::ObservabilityReport observability(const Fsm& plant, const Fsm& spec);
+Fsm supcon_normal(const Fsm& plant, const Fsm& spec);
 
 // The check of swarmcheck::supervisor::check on the compact form.
 swarmcheck::supervisor::CheckReport check(const Fsm& f);

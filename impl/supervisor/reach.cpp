@@ -116,4 +116,32 @@ swarmcheck::supervisor::CheckReport check(const Fsm& f) {
   return r;
 }
 
+std::vector<EventId> shortlex_word(const Fsm& f, StateId target) {
+  SWARM_DEMAND(target < f.state_count());
+  std::vector<StateId> parent(f.state_count(), kNoState);
+  std::vector<EventId> via(f.state_count(), 0);
+  for (StateId s = 0; s < f.state_count() && parent[target] == kNoState && target != 0; ++s)
+    for (auto i = f.first_edge[s]; i < f.first_edge[s + 1]; ++i) {
+      const StateId t = f.edge_target[i];
+      if (t != 0 && parent[t] == kNoState) {
+        parent[t] = s;
+        via[t] = f.edge_event[i];
+      }
+    }
+  std::vector<EventId> word;
+  for (StateId s = target; s != 0; s = parent[s]) {
+    SWARM_DEMAND(parent[s] != kNoState);
+    word.push_back(via[s]);
+  }
+  std::reverse(word.begin(), word.end());
+  return word;
+}
+
+std::vector<std::string> event_names(const Fsm& f, const std::vector<EventId>& word) {
+  std::vector<std::string> out;
+  out.reserve(word.size());
+  for (const EventId e : word) out.push_back(f.event_names[e]);
+  return out;
+}
+
 }  // namespace swarmcheck::impl::supervisor

@@ -3,6 +3,7 @@
 // (operations.hpp), the supervisor fixpoint (synth.cpp) and the mission planner's pruning of
 // states that cannot reach a marked state (impl/mission/planner.cpp).
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "impl/supervisor/fsm.hpp"
@@ -24,5 +25,14 @@ ReverseEdges reverse_edges(const Fsm& f, const std::vector<std::uint8_t>* events
 // worklist pass, O(states + edges).
 std::vector<std::uint8_t> coreachable(const ReverseEdges& r, const std::vector<std::uint8_t>& seeds,
                                       const std::vector<std::uint8_t>* within = nullptr);
+
+// For an accessible automaton numbered in breadth-first order with each state's edges in event
+// order (every product is): the shortlex-least word to `target`, as event ids. Breadth-first
+// search met each state first from its least word, so the parent of t is the first edge into t
+// in (source, event) order. O(states + edges).
+std::vector<EventId> shortlex_word(const Fsm& f, StateId target);
+
+// The names of the events of a word of f.
+std::vector<std::string> event_names(const Fsm& f, const std::vector<EventId>& word);
 
 }  // namespace swarmcheck::impl::supervisor

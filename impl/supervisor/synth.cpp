@@ -22,19 +22,11 @@ Prepared prepare(const Fsm& plant, const Fsm& spec, std::uint64_t max_bytes) {
   s.product = product_with_tuples({&plant, &spec}, {"plant", "spec"}, max_bytes);
   const Fsm& p = s.product.fsm;
   s.unc_plant.assign(p.event_count(), 0);
-  std::vector<EventId> in_p(plant.event_count());
-  for (EventId e = 0; e < plant.event_count(); ++e) {
-    in_p[e] = p.event_id(plant.event_names[e]);
-    if (!plant.controllable[e]) s.unc_plant[in_p[e]] = 1;
-  }
+  for (EventId e = 0; e < plant.event_count(); ++e)
+    if (!plant.controllable[e]) s.unc_plant[p.event_id(plant.event_names[e])] = 1;
   s.bad.assign(p.state_count(), 0);
-  for (StateId z = 0; z < p.state_count(); ++z) {
-    const StateId x = s.product.names.tuple(z)[0];
-    for (auto i = plant.first_edge[x]; i < plant.first_edge[x + 1]; ++i) {
-      const EventId e = plant.edge_event[i];
-      if (!plant.controllable[e] && p.successor(z, in_p[e]) == kNoState) s.bad[z] = 1;
-    }
-  }
+  const std::vector<EventId> disabled = disabled_uncontrollable(plant, s.product);
+  for (StateId z = 0; z < p.state_count(); ++z) s.bad[z] = disabled[z] != kNoEvent;
   return s;
 }
 
@@ -45,6 +37,21 @@ bool none_bad(const Prepared& s) {
 }
 
 }  // namespace
+
+std::vector<EventId> disabled_uncontrollable(const Fsm& plant, const Product& product) {
+  const Fsm& p = product.fsm;
+  std::vector<EventId> in_p(plant.event_count());
+  for (EventId e = 0; e < plant.event_count(); ++e) in_p[e] = p.event_id(plant.event_names[e]);
+  std::vector<EventId> out(p.state_count(), kNoEvent);
+  for (StateId z = 0; z < p.state_count(); ++z) {
+    const StateId x = product.names.tuple(z)[0];
+    for (auto i = plant.first_edge[x]; i < plant.first_edge[x + 1] && out[z] == kNoEvent; ++i) {
+      const EventId e = plant.edge_event[i];   // ascending ids: name order
+      if (!plant.controllable[e] && p.successor(z, in_p[e]) == kNoState) out[z] = e;
+    }
+  }
+  return out;
+}
 
 bool is_controllable(const Fsm& plant, const Fsm& spec) { return none_bad(prepare(plant, spec, 0)); }
 

@@ -21,7 +21,10 @@
 #include <string_view>
 #include <vector>
 
+#include "spec/supervisor/attributes.hpp"
 #include "spec/supervisor/automaton.hpp"
+#include "spec/supervisor/control.hpp"
+#include "spec/supervisor/observation.hpp"
 #include "spec/supervisor/semantics.hpp"
 #include "spec/util/input_error.hpp"
 
@@ -32,6 +35,10 @@ namespace swarmcheck::supervisor {
 // `source` names the text in error messages. Bad text: InputError at "source:line:column".
 Automaton read_fsm(std::string_view text, const std::string& source);
 Automaton read_fsm_file(const std::string& path);
+// The files of one command (plants, then specifications): an attribute (c|uc, o|uo) a file
+// leaves unstated is taken from the files that state it; two files stating it differently is an
+// InputError naming both files and lines (spec/supervisor/attributes.hpp).
+std::vector<Automaton> read_fsm_files(const std::vector<std::string>& paths);
 std::string write_fsm(const Automaton& a);
 // Through a temporary file and a rename: the file is written whole or left as it was.
 void write_fsm_file(const std::string& path, const Automaton& a);
@@ -65,8 +72,21 @@ Automaton product(const std::vector<Automaton>& parts, const std::vector<std::st
                   std::uint64_t max_bytes = 0);
 // Is spec controllable with respect to plant?
 bool is_controllable(const Automaton& plant, const Automaton& spec);
+// sup as a supervisor of plant: controllable? the closed loop nonblocking? with shortest witnesses
+// (spec/supervisor/control.hpp).
+ControlReport control_report(const Automaton& plant, const Automaton& sup);
 // The supremal controllable nonblocking supervisor (the empty automaton when none exists).
 Automaton supcon(const Automaton& plant, const Automaton& spec, std::uint64_t max_bytes = 0);
+// ---- partial observation (`uo` events; spec/supervisor/observation.hpp) --------------------------
+
+// The observer: the natural projection onto the observable events, determinised (states "{q,r}").
+Automaton observer(const Automaton& a);
+// Is L(plant || spec) observable for plant? With two words of one projection as a witness.
+ObservabilityReport observability(const Automaton& plant, const Automaton& spec);
+// The supremal controllable, normal and nonblocking supervisor (states "x.y.o<k>", k the
+// observer class); supcon's language when no event is unobservable.
+Automaton supcon_normal(const Automaton& plant, const Automaton& spec);
+
 // L(a) in L(b) and Lm(a) in Lm(b), each with its shortlex-least witness when it fails.
 Inclusion language_inclusion(const Automaton& a, const Automaton& b);
 

@@ -1,0 +1,202 @@
+// `swarmcheck fsm controllable`: sup as a supervisor of the plant (the product of the plant
+// files): controllable? the closed loop nonblocking? each with its shortest witness.
+// `fsm observable`: is the specification observable for the plant? `fsm project`: the observer.
+// The files of one command are read together, so a specification's unstated attributes come
+// from the plant.
+#include "apps/swarmcheck/fsm_control_verb.hpp"
+
+#include <fmt/format.h>
+
+#include <memory>
+#include <set>
+#include <nlohmann/json.hpp>
+
+#include "apps/swarmcheck/verb.hpp"
+#include "conformance/supervisor/engine.hpp"
+#include "impl/io/atomic_file.hpp"
+#include "impl/supervisor/fsm_compact_io.hpp"
+#include "impl/supervisor/operations.hpp"
+#include "spec/util/hana_json.hpp"
+#include "swarmcheck/supervisor.hpp"
+
+namespace swarmcheck::cli {
+
+namespace fsm_control {  // named, not anonymous: fsm_verb.cpp shares this unity build
+
+namespace sv = swarmcheck::supervisor;
+namespace engines = swarmcheck::conformance::supervisor;
+namespace is = swarmcheck::impl::supervisor;
+using Json = nlohmann::ordered_json;
+
+struct Options {
+  std::vector<std::string> plants, specs;
+  std::string sup, file, out;
+  bool json = false;
+  std::string engine = "impl";
+};
+
+void print_json(const Json& j) { fmt::print("{}\n", json_io::dump_text(j, 2)); }
+
+struct Sizes {
+  std::size_t plant_states = 0, sup_states = 0;
+};
+
+sv::ControlReport report(const Options& o, Sizes& sizes) {
+  std::vector<std::string> paths = o.plants;
+  paths.push_back(o.sup);
+  const engines::Engine engine = engines::engine_named(o.engine);
+  if (engine == engines::Engine::impl) {
+    std::vector<is::Fsm> all = is::read_fsm_compact_files(paths);
+    std::vector<const is::Fsm*> plants;
+    for (std::size_t i = 0; i + 1 < all.size(); ++i) plants.push_back(&all[i]);
+    const is::Fsm plant = is::product(plants, o.plants);
+    sizes = {plant.state_count(), all.back().state_count()};
+    return is::control_report(plant, all.back());
+  }
+  std::vector<sv::Automaton> all = sv::read_fsm_files(paths);
+  const sv::Automaton sup = all.back();
+  all.pop_back();
+  const sv::Automaton plant = engines::product(all, o.plants, engine);
+  sizes = {plant.states.size(), sup.states.size()};
+  return engines::control_report(plant, sup, engine);
+}
+
+std::string words(const std::vector<std::string>& w) {
+  return w.empty() ? "the empty word" : fmt::format("{}", fmt::join(w, " "));
+}
+
+int run_controllable(const Options& o) {
+  Sizes n;
+  const sv::ControlReport r = report(o, n);
+  if (o.json) {
+    print_json(Json{{"plant", o.plants},
+             {"supervisor", o.sup},
+             {"plant_states", n.plant_states},
+             {"supervisor_states", n.sup_states},
+             {"closed_loop_states", r.closed_loop_states},
+             {"controllable", r.controllable},
+             {"witness", r.controllable ? Json(nullptr) : Json(r.witness)},
+             {"disabled_event", r.controllable ? Json(nullptr) : Json(r.disabled_event)},
+             {"nonblocking", r.nonblocking},
+             {"blocking_witness", r.nonblocking ? Json(nullptr) : Json(r.blocking_witness)}});
+  } else {
+    fmt::print("plant: {} states ({} files); supervisor {}: {} states; closed loop: {} states\n",
+               n.plant_states, o.plants.size(), o.sup, n.sup_states, r.closed_loop_states);
+    fmt::print("controllable: {}\n", r.controllable ? "yes" : "no");
+    if (!r.controllable)
+      fmt::print("  after {}, the plant can do the uncontrollable event {}, which the supervisor "
+                 "disables\n", words(r.witness), r.disabled_event);
+    fmt::print("nonblocking closed loop: {}\n", r.nonblocking ? "yes" : "no");
+    if (!r.nonblocking)
+      fmt::print("  after {}, no marked state can be reached\n", words(r.blocking_witness));
+  }
+  return r.controllable && r.nonblocking ? 0 : 1;
+}
+
+// Plants and specifications read together, each side's product taken on the chosen engine.
+std::pair<sv::Automaton, sv::Automaton> plant_and_spec(const Options& o, engines::Engine engine) {
+  std::vector<std::string> paths = o.plants;
+  paths.insert(paths.end(), o.specs.begin(), o.specs.end());
+  std::vector<sv::Automaton> all = sv::read_fsm_files(paths);
+  std::vector<sv::Automaton> specs(all.begin() + static_cast<std::ptrdiff_t>(o.plants.size()), all.end());
+  all.resize(o.plants.size());
+  return {engines::product(all, o.plants, engine), engines::product(specs, o.specs, engine)};
+}
+
+int run_observable(const Options& o) {
+  const engines::Engine engine = engines::engine_named(o.engine);
+  const auto [plant, spec] = plant_and_spec(o, engine);
+  const sv::ObservabilityReport r = engines::observability(plant, spec, engine);
+  std::set<std::string> uo;
+  for (const sv::Automaton* a : {&plant, &spec})
+    for (const auto& e : sv::unobservable_events(a->events)) uo.insert(e);
+  const std::vector<std::string> unobservable(uo.begin(), uo.end());
+  if (o.json) {
+    print_json(Json{{"plant", o.plants},
+                    {"spec", o.specs},
+                    {"unobservable_events", unobservable},
+                    {"observable", r.observable},
+                    {"word", r.observable ? Json(nullptr) : Json(r.word)},
+                    {"twin", r.observable ? Json(nullptr) : Json(r.twin)},
+                    {"event", r.observable ? Json(nullptr) : Json(r.event)}});
+  } else {
+    fmt::print("unobservable events: {}\nobservable: {}\n",
+               unobservable.empty() ? "(none)" : fmt::format("{}", fmt::join(unobservable, " ")),
+               r.observable ? "yes" : "no");
+    if (!r.observable)
+      fmt::print("  {} and {} look the same to a supervisor; the specification allows the "
+                 "controllable event {} after the first and disables it after the second, "
+                 "where the plant can do it\n", words(r.word), words(r.twin), r.event);
+  }
+  return r.observable ? 0 : 1;
+}
+
+int run_project(const Options& o) {
+  const engines::Engine engine = engines::engine_named(o.engine);
+  const sv::Automaton a = sv::read_fsm_file(o.file);
+  const sv::Automaton obs = engines::observer(a, engine);
+  if (o.out.empty()) {
+    fmt::print("{}", sv::write_fsm(obs));
+    return 0;
+  }
+  sv::write_fsm_file(o.out, obs);
+  const auto erased = sv::unobservable_events(a.events);
+  if (o.json)
+    print_json(Json{{"input", o.file},
+                    {"output", o.out},
+                    {"input_states", a.states.size()},
+                    {"states", obs.states.size()},
+                    {"transitions", sv::transition_count(obs)},
+                    {"erased_events", erased}});
+  else
+    fmt::print("{}: observer of {} states, {} transitions ({} states in, erased: {})\n", o.out,
+               obs.states.size(), sv::transition_count(obs), a.states.size(),
+               erased.empty() ? "none" : fmt::format("{}", fmt::join(erased, " ")));
+  return 0;
+}
+
+}  // namespace fsm_control
+
+void add_fsm_control_subcommands(CLI::App* fsm, int& exit_code) {
+  auto o = std::make_shared<fsm_control::Options>();
+  auto* ctl = fsm->add_subcommand(
+      "controllable",
+      "is a given supervisor controllable for the plant, and the closed loop nonblocking? with "
+      "shortest witnesses (exit 1 if not)");
+  ctl->add_option("--plant", o->plants, "plant component .fsm files")->required()->expected(1, -1);
+  ctl->add_option("--sup", o->sup, "the supervisor .fsm")->required();
+  ctl->add_flag("--json", o->json, "print JSON");
+  ctl->add_option("--engine", o->engine, "impl (fast, default) or model (the reference)")
+      ->check(CLI::IsMember({"impl", "model"}));
+  ctl->callback([&exit_code, o] {
+    exit_code = guarded([&] { return fsm_control::run_controllable(*o); });
+  });
+
+  auto* obs = fsm->add_subcommand(
+      "observable", "is a specification observable for the plant under its uo events? with a "
+                    "witness of two words that look alike (exit 1 if not)");
+  obs->add_option("--plant", o->plants, "plant component .fsm files")->required()->expected(1, -1);
+  obs->add_option("--spec", o->specs, "specification .fsm files")->required()->expected(1, -1);
+  obs->add_flag("--json", o->json, "print JSON");
+  obs->add_option("--engine", o->engine, "impl (fast, default) or model (the reference)")
+      ->check(CLI::IsMember({"impl", "model"}));
+  obs->callback([&exit_code, o] {
+    exit_code = guarded([&] { return fsm_control::run_observable(*o); });
+  });
+
+  auto* proj = fsm->add_subcommand(
+      "project", "the observer: natural projection onto the observable events, determinised");
+  proj->add_option("file", o->file, "the .fsm file")->required();
+  proj->add_option("-o,--output", o->out, "the observer .fsm to write (default: standard output)");
+  proj->add_flag("--json", o->json, "with -o: print a JSON summary");
+  proj->add_option("--engine", o->engine, "impl (fast, default) or model (the reference)")
+      ->check(CLI::IsMember({"impl", "model"}));
+  proj->callback([&exit_code, o] {
+    exit_code = guarded([&] {
+      impl::io::refuse_output_that_is_an_input(o->out, {o->file});
+      return fsm_control::run_project(*o);
+    });
+  });
+}
+
+}  // namespace swarmcheck::cli
