@@ -1,0 +1,98 @@
+// Concurrent execution (spec/mission/run.hpp rule 1): robots work at once on the plan's events,
+// the plan is kept unless a strictly better one appears, and the run is a word of the
+// supervisor. Properties on generated obstacle-free allocation missions with the kinematic body
+// (conformance/mission/generate_concurrent.cpp), seeded so the cases are the same every time.
+#include <gtest/gtest.h>
+#include <rapidcheck/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+
+#include "conformance/mission/generate.hpp"
+#include "spec/mission/avoidance.hpp"
+#include "spec/mission/plan.hpp"
+#include "swarmcheck/mission.hpp"
+
+namespace {
+
+namespace sm = swarmcheck::mission;
+namespace cm = swarmcheck::conformance::mission;
+
+const bool kSeededConcurrent = [] { return ::setenv("RC_PARAMS", "seed=14 max_success=150", 0) == 0; }();
+
+std::vector<std::string> names(const std::vector<sm::EventRecord>& events, bool controllable_only) {
+  std::vector<std::string> out;
+  for (const auto& e : events)
+    if (!controllable_only || e.controllable) out.push_back(e.event);
+  return out;
+}
+
+std::vector<std::string> first_plan(const sm::Mission& m) {
+  const sm::Plan p = sm::Planner(m).plan(sm::initial_query(m));
+  RC_ASSERT(p.found);
+  return p.events;
+}
+
+RC_GTEST_PROP(MissionConcurrent, ExecutedAssignmentEqualsTheFirstPlansOnGeneratedMissions, ()) {
+  const cm::RunCase c = *cm::concurrent_case();
+  const sm::RunResult r = sm::run_mission(c.mission, c.options);
+  RC_ASSERT(r.completed);
+  RC_TAG(r.replans > 1 ? "replanned" : "one plan");
+  RC_ASSERT(sm::task_sequences(c.mission, names(r.events, true)) ==
+            sm::task_sequences(c.mission, first_plan(c.mission)));
+}
+
+// Every event fired where the supervisor enabled it, in the state the record names, and the
+// run ends at a marked state: on the concurrent cases and on the differential's run cases
+// (random supervisors and regions, both bodies), up to where those runs end.
+void check_word(const sm::Mission& m, const sm::RunResult& r) {
+  std::string q = m.initial_state;
+  for (const auto& e : r.events) {
+    const auto next = swarmcheck::supervisor::successor(m.fsm, q, e.event);
+    RC_ASSERT(next.has_value());
+    RC_ASSERT(*next == e.state_after);
+    q = *next;
+  }
+  RC_ASSERT(q == r.final_state);
+  RC_ASSERT(sm::is_marked(m, q) == r.completed);
+}
+
+RC_GTEST_PROP(MissionConcurrent, EveryExecutedEventSequenceIsAWordOfTheSupervisor, ()) {
+  const cm::RunCase c = *rc::gen::oneOf(cm::concurrent_case(), cm::run_case());
+  check_word(c.mission, sm::run_mission(c.mission, c.options));
+}
+
+RC_GTEST_PROP(MissionConcurrent, RealisedMakespanIsNeverWorseThanThePlanRobotByRobot, ()) {
+  const cm::RunCase c = *cm::concurrent_case();
+  const sm::RunResult r = sm::run_mission(c.mission, c.options);
+  const sm::RunResult one_by_one = sm::run_mission(cm::robot_by_robot(c.mission, first_plan(c.mission)), c.options);
+  RC_ASSERT(r.completed);
+  RC_ASSERT(one_by_one.completed);
+  RC_TAG(c.mission.robots.size() > 1 && r.time_s < one_by_one.time_s ? "faster" : "as fast");
+  RC_ASSERT(r.time_s <= one_by_one.time_s);
+}
+
+// The intervals tile each robot's time: from 0 to the end, back to back, activities alternating.
+RC_GTEST_PROP(MissionConcurrent, ActivityIntervalsTileEachRobotsTime, ()) {
+  const cm::RunCase c = *rc::gen::oneOf(cm::concurrent_case(), cm::run_case());
+  const sm::RunResult r = sm::run_mission(c.mission, c.options);
+  for (const auto& robot : c.mission.robots) {
+    std::vector<sm::IntervalRecord> mine;
+    for (const auto& i : r.intervals)
+      if (i.robot == robot.name) mine.push_back(i);
+    if (r.time_s == 0.0) {
+      RC_ASSERT(mine.empty());
+      continue;
+    }
+    RC_ASSERT(!mine.empty());
+    RC_ASSERT(mine.front().from_s == 0.0);
+    RC_ASSERT(mine.back().to_s == r.time_s);
+    for (std::size_t k = 0; k < mine.size(); ++k) {
+      RC_ASSERT(mine[k].from_s < mine[k].to_s);
+      if (k > 0) RC_ASSERT(mine[k].from_s == mine[k - 1].to_s);
+      if (k > 0) RC_ASSERT(mine[k].activity != mine[k - 1].activity);
+    }
+  }
+}
+
+}  // namespace
