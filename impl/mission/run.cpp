@@ -161,22 +161,27 @@ class Runner {
     return end && sm::is_marked(m_, *end);
   }
 
-  // The plan's event to issue now (spec rule 1b), as its index; plan_->size() when none.
-  std::size_t issuable() const {
+  // The plan's event to issue now and the plan after it (spec rule 1b), or nothing.
+  std::optional<std::pair<std::string, std::vector<std::string>>> issuable() const {
     const auto& p = *plan_;
     std::vector<std::uint8_t> seen(robots_.size(), 0);  // robots with an earlier event in p
-    std::vector<std::string> reordered;
+    std::vector<std::string> rest;
     for (std::size_t i = 0; i < p.size(); ++i) {
       const std::size_t robot = m_.events.at(p[i]).robot;
       const bool first_own = !seen[robot];
       seen[robot] = 1;
       if (!first_own || !m_.fsm.events.at(p[i]).controllable) continue;
-      reordered.assign(1, p[i]);
-      reordered.insert(reordered.end(), p.begin(), p.begin() + static_cast<std::ptrdiff_t>(i));
-      reordered.insert(reordered.end(), p.begin() + static_cast<std::ptrdiff_t>(i) + 1, p.end());
-      if (reaches_marked(reordered)) return i;
+      const auto after = swarmcheck::supervisor::successor(m_.fsm, state_, p[i]);
+      if (!after) continue;
+      rest.assign(p.begin(), p.begin() + static_cast<std::ptrdiff_t>(i));
+      rest.insert(rest.end(), p.begin() + static_cast<std::ptrdiff_t>(i) + 1, p.end());
+      const auto end = sm::fire_all(m_, *after, rest);
+      if (end && sm::is_marked(m_, *end)) return std::make_pair(p[i], std::move(rest));
+      // The same tasks per robot, interleaved another way the supervisor allows from here.
+      if (auto other = sm::path_with_assignment(m_, *after, sm::task_sequences(m_, rest)))
+        return std::make_pair(p[i], std::move(*other));
     }
-    return p.size();
+    return std::nullopt;
   }
 
   // Issues every controllable event the plan schedules and the supervisor allows now (spec rule
@@ -191,11 +196,20 @@ class Runner {
           return false;
         }
         // The plan in hand is kept unless the new optimum is strictly better.
-        if (!plan_ || sm::better(p.cost, sm::evaluate_path(m_, q, *plan_).cost)) plan_ = p.events;
+        if (!plan_ || sm::better(p.cost, sm::evaluate_path(m_, q, *plan_).cost)) {
+          plan_ = p.events;
+          settled_ = false;
+        }
       }
-      const std::size_t i = issuable();
-      if (i == plan_->size()) break;
-      const std::string e = (*plan_)[i];
+      if (settled_) break;  // nothing changed since the last choice found nothing to issue
+      auto next = issuable();
+      if (!next) {
+        settled_ = true;
+        break;
+      }
+      const std::string e = next->first;
+      plan_ = std::move(next->second);
+      plan_->insert(plan_->begin(), e);
       const sm::Meaning& mn = m_.events.at(e);
       RobotSim& r = robots_[mn.robot];
       r.planned += sm::distance(plan_point(mn.robot), m_.tasks[mn.target].at);
@@ -267,7 +281,10 @@ class Runner {
     r.leg_is_task = true;
     if (!plan_) {
       const sm::Plan p = ask();
-      if (p.found) plan_ = p.events;
+      if (p.found) {
+        plan_ = p.events;
+        settled_ = false;
+      }
     }
     if (!plan_) return;
     for (const auto& e : *plan_) {
@@ -311,6 +328,7 @@ class Runner {
     if (!next) throw std::logic_error("planned event " + e + " is not enabled in state " + state_);
     state_ = *next;
     fresh_plan_ = false;
+    settled_ = false;
     if (plan_) {  // the plan loses e, or is dropped when the rest is no longer a plan from here
       const auto at = std::find(plan_->begin(), plan_->end(), e);
       if (at == plan_->end()) {
@@ -345,6 +363,7 @@ class Runner {
   std::optional<std::vector<std::string>> plan_;  // the current plan's events not yet fired
   bool asked_ = false;                            // the planner was asked at least once
   bool fresh_plan_ = false;                       // asked since the last event fired
+  bool settled_ = false;  // the choice found nothing to issue, and no event fired since
   std::vector<RobotSim> robots_;
   RunResult result_;
 };

@@ -149,21 +149,25 @@ bool enables_controllable(const World& w) {
   return false;
 }
 
-// Rule 1b: the index in P of the event to issue now, or P's size when there is none.
-std::size_t issuable(const World& w) {
+// Rule 1b: the event to issue now and the plan after it, or nothing.
+std::optional<std::pair<std::string, std::vector<std::string>>> issuable(const World& w) {
   const std::vector<std::string>& p = *w.current;
   for (std::size_t i = 0; i < p.size(); ++i) {
     if (!w.m.fsm.events.at(p[i]).controllable) continue;
+    const auto after = swarmcheck::supervisor::successor(w.m.fsm, w.q, p[i]);
+    if (!after) continue;
     const std::size_t robot = w.m.events.at(p[i]).robot;
     bool first_own = true;
     for (std::size_t j = 0; j < i; ++j) first_own = first_own && w.m.events.at(p[j]).robot != robot;
     if (!first_own) continue;
-    std::vector<std::string> moved{p[i]};
+    std::vector<std::string> rest;
     for (std::size_t j = 0; j < p.size(); ++j)
-      if (j != i) moved.push_back(p[j]);
-    if (leads_to_marked(w, w.q, moved)) return i;
+      if (j != i) rest.push_back(p[j]);
+    if (leads_to_marked(w, *after, rest)) return std::make_pair(p[i], rest);
+    if (auto other = sm::path_with_assignment(w.m, *after, sm::task_sequences(w.m, rest)))
+      return std::make_pair(p[i], std::move(*other));
   }
-  return p.size();
+  return std::nullopt;
 }
 
 // Rule 1; false when the run ends (no marked state reachable).
@@ -179,9 +183,11 @@ bool choose(World& w, double t) {
       if (!w.current || sm::better(p.cost, sm::evaluate_path(w.m, pq, *w.current).cost))
         w.current = p.events;
     }
-    const std::size_t i = issuable(w);
-    if (i == w.current->size()) return true;
-    const std::string e = (*w.current)[i];
+    auto next = issuable(w);
+    if (!next) return true;
+    const std::string e = next->first;
+    w.current = std::move(next->second);
+    w.current->insert(w.current->begin(), e);
     const sm::Meaning& start = w.m.events.at(e);
     Robot& r = w.robots[start.robot];
     r.planned_m += sm::distance(plan_position(w, start.robot), w.m.tasks[start.target].at);

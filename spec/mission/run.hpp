@@ -34,13 +34,16 @@
 //        ("no marked state is reachable from state q"). The new plan becomes P only when P is
 //        none or the new plan's cost is strictly better (spec `better`) than P's cost from the
 //        same query (evaluate_path): otherwise P, and with it the assignment, is kept.
-//     b. Issue: the first event P[i] of P (in plan order) that is controllable, whose robot has
-//        no event before it in P, and such that P[i] followed by the rest of P is a path from q
-//        to a marked state (so it is enabled now, and moving it first keeps every robot's own
-//        order and the plan's cost). It is a task start: that robot queues the task and was sent
-//        to it last, its planned travel grows, the event fires at t, and the choice goes on. No
-//        such event: the choice stops (every robot whose next planned event is uncontrollable,
-//        or not yet allowed, waits for it while the others work).
+//     b. Issue: the first event e = P[i] of P (in plan order) that is controllable, enabled in
+//        q, and whose robot has no event before it in P, and after which the plan's assignment
+//        can still be completed: with R = P without P[i], either R is a path from q' = delta(q,
+//        e) to a marked state (e moved first, everything else in plan order), or else
+//        path_with_assignment(q', task_sequences(R)) finds one (spec/mission/plan.hpp: the same
+//        tasks per robot in the same order, so the same cost, events interleaved otherwise),
+//        which replaces R. e is a task start: that robot queues the task and was sent to it
+//        last, its planned travel grows, P becomes e followed by R, e fires at t (so P becomes
+//        R), and the choice goes on. No such event: the choice stops (every robot whose next
+//        planned event is uncontrollable, or not yet possible, waits while the others work).
 //  2. End: q marked ends it ("mission complete"); k >= floor(max_time / dt) ends it ("time limit
 //     of T s reached", T as fmt's {} prints max_time_s).
 //  3. Motion to t' = (k + 1) dt (computed as the double (k + 1) times dt), robots in index order,

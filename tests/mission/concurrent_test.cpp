@@ -72,6 +72,23 @@ RC_GTEST_PROP(MissionConcurrent, RealisedMakespanIsNeverWorseThanThePlanRobotByR
   RC_ASSERT(r.time_s <= one_by_one.time_s);
 }
 
+// The re-interleaving rule 1b falls back on: from the plan's start, a path with the plan's own
+// assignment exists, is no longer than the plan, and costs exactly what the plan costs.
+RC_GTEST_PROP(MissionConcurrent, PathWithThePlansAssignmentCostsWhatThePlanCosts, ()) {
+  const sm::Mission m = *rc::gen::oneOf(cm::random_small_mission(), cm::small_allocation_mission());
+  const sm::PlanQuery q = sm::initial_query(m);
+  const sm::Plan p = sm::Planner(m).plan(q);
+  RC_PRE(p.found);
+  const auto tasks = sm::task_sequences(m, p.events);
+  const auto path = sm::path_with_assignment(m, q.from, tasks);
+  RC_ASSERT(path.has_value());
+  RC_ASSERT(path->size() <= p.events.size());
+  RC_ASSERT(sm::task_sequences(m, *path) == tasks);
+  const sm::PathEvaluation ev = sm::evaluate_path(m, q, *path);
+  RC_ASSERT(ev.error.empty());
+  RC_ASSERT(ev.cost == p.cost);
+}
+
 // The intervals tile each robot's time: from 0 to the end, back to back, activities alternating.
 RC_GTEST_PROP(MissionConcurrent, ActivityIntervalsTileEachRobotsTime, ()) {
   const cm::RunCase c = *rc::gen::oneOf(cm::concurrent_case(), cm::run_case());

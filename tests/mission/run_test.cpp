@@ -75,12 +75,14 @@ void run_and_replay(sm::BodyModel body) {
   EXPECT_EQ(r.reason, "mission complete");
   const auto t = im::read_trace(trace, "trace");
   EXPECT_EQ(replay(m, t), "");
-  // The robots did the planned tasks: A 3 then 4, B 1 then 2.
+  // The robots did the planned tasks: A 3 then 4, B 1 then 2; B starts as soon as the
+  // supervisor allows it (state s14, A on its way to task 3), not after A's tasks.
   std::vector<std::string> starts;
   for (const auto& e : r.events)
     if (e.controllable) starts.push_back(e.event);
-  EXPECT_EQ(starts, (std::vector<std::string>{"a3s", "a4s", "b1s", "b2s"}));
-  // Concurrently: B starts task 1 while A is still on its way to task 4 (thesis Figure 4-5).
+  EXPECT_EQ(starts, (std::vector<std::string>{"a3s", "b1s", "b2s", "a4s"}));
+  EXPECT_EQ(r.events[position_of(r, "b1s") - 1].state_after, "s14");
+  EXPECT_LT(position_of(r, "b1s"), position_of(r, "a3f"));
   EXPECT_LT(position_of(r, "b1s"), position_of(r, "a4f"));
   EXPECT_LT(time_of(r, "b1s"), time_of(r, "a4f"));
   // The trace's intervals are the result's, and B was busy before A's last task ended.
