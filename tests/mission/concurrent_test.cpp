@@ -9,6 +9,7 @@
 #include <cstdlib>
 
 #include "conformance/mission/generate.hpp"
+#include "model/mission/run_model.hpp"
 #include "spec/mission/avoidance.hpp"
 #include "spec/mission/plan.hpp"
 #include "swarmcheck/mission.hpp"
@@ -110,6 +111,45 @@ RC_GTEST_PROP(MissionConcurrent, ActivityIntervalsTileEachRobotsTime, ()) {
       if (k > 0) RC_ASSERT(mine[k].activity != mine[k - 1].activity);
     }
   }
+}
+
+// Rule 1a on the reference model, whose planner is a parameter: after the first plan (A: t1,
+// B: t2, C: t3 on the three-robot mission), every replan offers A: t1, t2 instead (B idle),
+// claiming a cost equal to the plan in hand, or 1 m less. Equal keeps the plan; strictly better replaces it.
+// (With the exact planner a kept plan is never beaten: its cost is the first plan's, bit for bit.)
+std::vector<std::vector<std::size_t>> executed_with_rival(double claimed_gain) {
+  const sm::Mission m = sm::load_mission(SWARMCHECK_SCENARIOS "/examples/three-robots.json");
+  sm::Planner exact(m);
+  bool first = true;
+  const swarmcheck::model::mission::PlanFunction rival = [&](const sm::PlanQuery& q) {
+    sm::Plan p = exact.plan(q);
+    if (first || !p.found) {
+      first = false;
+      return p;
+    }
+    auto tasks = sm::task_sequences(m, p.events);
+    if (tasks[1].empty()) return p;  // B already started: nothing to hand over
+    tasks[0].insert(tasks[0].end(), tasks[1].begin(), tasks[1].end());
+    tasks[1].clear();
+    const auto other = sm::path_with_assignment(m, q.from, tasks);
+    if (!other) return p;
+    p.events = *other;
+    p.cost.makespan -= claimed_gain;
+    return p;
+  };
+  sm::RunOptions o;
+  o.body = sm::BodyModel::kinematic;
+  const sm::RunResult r = swarmcheck::model::mission::run_model(m, o, rival);
+  EXPECT_TRUE(r.completed) << r.reason;
+  return sm::task_sequences(m, names(r.events, true));
+}
+
+TEST(MissionConcurrent, ReplanKeepsThePlanAgainstAnEquallyGoodRival) {
+  EXPECT_EQ(executed_with_rival(0.0), (std::vector<std::vector<std::size_t>>{{0}, {1}, {2}}));
+}
+
+TEST(MissionConcurrent, ReplanTakesAStrictlyBetterRival) {
+  EXPECT_EQ(executed_with_rival(1.0), (std::vector<std::vector<std::size_t>>{{0, 1}, {}, {2}}));
 }
 
 }  // namespace
