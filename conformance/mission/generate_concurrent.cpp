@@ -59,15 +59,21 @@ rc::Gen<RunCase> concurrent_case() {
     const auto robots = *uniform_in<std::size_t>(1, 4);
     const auto tasks = *uniform_in<std::size_t>(1, 5);
     const auto capacity = *uniform_in<std::size_t>(1, robots + 1);
+    const auto per_robot = *uniform_in<std::size_t>(1, 3);
+    // Symmetric: tasks on the axes at distance 10, robots at the centre or on the diagonals, so
+    // that several assignments cost exactly the same.
+    const bool symmetric = *uniform_in(0, 2) == 0;
     std::vector<sm::Point> starts, points;
     for (std::size_t r = 0; r < robots; ++r)
-      starts.push_back({double(*uniform_in(-3, 4)), double(*uniform_in(-3, 4))});
+      starts.push_back(symmetric ? sm::Point{double(*rc::gen::element(-2, 0, 2)), double(*rc::gen::element(-2, 0, 2))}
+                                 : sm::Point{double(*uniform_in(-3, 4)), double(*uniform_in(-3, 4))});
     for (std::size_t t = 0; t < tasks; ++t) {
       const double angle = 2 * std::numbers::pi * (double(t) + *uniform_in(-30, 31) / 100.0) / double(tasks);
       const double radius = *uniform_in(8, 13);
-      points.push_back({std::round(radius * std::cos(angle)), std::round(radius * std::sin(angle))});
+      points.push_back(symmetric ? std::vector<sm::Point>{{10, 0}, {0, 10}, {-10, 0}, {0, -10}}[t]
+                                 : sm::Point{std::round(radius * std::cos(angle)), std::round(radius * std::sin(angle))});
     }
-    return allocation_mission_at(starts, points, capacity);
+    return allocation_mission_at(starts, points, capacity, per_robot);
   });
   return rc::gen::apply(
       [](const sm::Mission& m, double dt, double speed) {
