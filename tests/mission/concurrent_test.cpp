@@ -113,6 +113,42 @@ RC_GTEST_PROP(MissionConcurrent, ActivityIntervalsTileEachRobotsTime, ()) {
   }
 }
 
+// Rule 1b's robot order: one robot, tasks t0 (5, 0) and t1 (5, 5), a gate region across its way
+// to t0. The supervisor allows t1's start right after t0's (q1), before or after the gate's
+// entry; the plan enters the gate first (t0, gate, t1). The start of t1 must wait for the gate's
+// entry, the robot's own earlier event in the plan, though the supervisor would allow it now.
+TEST(MissionConcurrent, ARobotsNextStartWaitsForItsOwnEarlierPlannedEvents) {
+  namespace sv = swarmcheck::supervisor;
+  sm::MissionDecl d;
+  d.fsm = "gate.fsm";
+  d.initial_state = "q0";
+  d.marked_states = {"q3"};
+  d.robots = {sm::RobotDecl{"A", {0, 0}}};
+  d.tasks = {sm::TaskDecl{"t0", {5, 0}}, sm::TaskDecl{"t1", {5, 5}}};
+  d.regions = {sm::RegionDecl{"gate", {sm::Point{1, -1}, sm::Point{3, 1}}}};
+  d.events = {{"a_s0", {"A", "t0", std::nullopt}}, {"a_s1", {"A", "t1", std::nullopt}},
+              {"a_e_gate", {"A", std::nullopt, "gate"}}};
+  sv::Automaton fsm;
+  fsm.states = {"q0", "q1", "q2", "q3", "q4"};
+  fsm.marked = {"q3"};
+  fsm.events = {{"a_s0", {true, true}}, {"a_s1", {true, true}}, {"a_e_gate", {false, true}}};
+  fsm.delta["q0"]["a_s0"] = "q1";
+  fsm.delta["q1"]["a_e_gate"] = "q2";
+  fsm.delta["q2"]["a_s1"] = "q3";
+  fsm.delta["q1"]["a_s1"] = "q4";
+  fsm.delta["q4"]["a_e_gate"] = "q3";
+  const sm::Mission m = sm::check_mission(d, fsm, "gate.json");
+  ASSERT_EQ(sm::Planner(m).plan(sm::initial_query(m)).events,
+            (std::vector<std::string>{"a_s0", "a_e_gate", "a_s1"}));
+  sm::RunOptions o;
+  o.body = sm::BodyModel::kinematic;
+  const sm::RunResult r = sm::run_mission(m, o);
+  ASSERT_TRUE(r.completed) << r.reason;
+  ASSERT_EQ(names(r.events, false), (std::vector<std::string>{"a_s0", "a_e_gate", "a_s1"}));
+  EXPECT_GT(r.events[1].time_s, 0.0);
+  EXPECT_EQ(r.events[2].time_s, r.events[1].time_s);  // issued the moment the gate was entered
+}
+
 // Rule 1a on the reference model, whose planner is a parameter: after the first plan (A: t1,
 // B: t2, C: t3 on the three-robot mission), every replan offers A: t1, t2 instead (B idle),
 // claiming a cost equal to the plan in hand, or 1 m less. Equal keeps the plan; strictly better replaces it.
