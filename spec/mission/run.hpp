@@ -22,9 +22,10 @@
 // query is remembered, and when kPlanMemory are remembered already they are all forgotten first.
 // Every query after the first plan counts as a replan (replans).
 //
-// Firing an event e (issued or entered): q moves on; P loses the first occurrence of e when
-// what remains is a path from the new q to a marked state (spec evaluate_path), and otherwise
-// becomes none (a region entry the plan did not expect).
+// Firing an event e (issued or entered): q moves on; P (if any) loses the first occurrence of e
+// when what remains fires in turn from the new q to a marked state (fire_all, is_marked), and
+// otherwise becomes none (e is not in P, or came in an order the rest of P cannot follow: a
+// region entry the plan did not expect).
 //
 // Time 0: the entry events of the start positions fire (initial_entries); the first plan becomes
 // P (none if no plan is found) and gives makespan_planned (0 if none); a step record at t = 0.
