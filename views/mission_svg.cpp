@@ -33,6 +33,10 @@ void MissionPathRecorder::on_event(const swarmcheck::mission::EventRecord& e) {
   if (next_) next_->on_event(e);
 }
 
+void MissionPathRecorder::on_interval(const swarmcheck::mission::IntervalRecord& i) {
+  if (next_) next_->on_interval(i);
+}
+
 void MissionPathRecorder::on_step(const swarmcheck::mission::StepRecord& s) {
   if (next_) next_->on_step(s);
   SWARM_DEMAND(s.positions.size() == paths_.size());

@@ -25,6 +25,7 @@ class MissionPathRecorder : public swarmcheck::mission::RunObserver {
   MissionPathRecorder(std::size_t robots, swarmcheck::mission::RunObserver* next);
   void on_event(const swarmcheck::mission::EventRecord& e) override;
   void on_step(const swarmcheck::mission::StepRecord& s) override;
+  void on_interval(const swarmcheck::mission::IntervalRecord& i) override;
   const std::vector<std::vector<swarmcheck::mission::Point>>& paths() const { return paths_; }
 
  private:

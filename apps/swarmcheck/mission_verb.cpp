@@ -96,6 +96,14 @@ int run_plan(const PlanOptions& o) {
   return 0;
 }
 
+// Seconds robot `name` spent in `a` over the run.
+double time_in(const sm::RunResult& r, const std::string& name, sm::Activity a) {
+  double s = 0.0;
+  for (const auto& i : r.intervals)
+    if (i.robot == name && i.activity == a) s += i.to_s - i.from_s;
+  return s;
+}
+
 int run_run(const RunOptions& o) {
   impl::io::refuse_output_that_is_an_input(o.trace, {o.file});
   impl::io::refuse_output_that_is_an_input(o.svg, {o.file, o.trace});
@@ -131,6 +139,10 @@ int run_run(const RunOptions& o) {
   if (o.json) {
     Json travel = Json::object();
     for (std::size_t k = 0; k < m.robots.size(); ++k) travel[m.robots[k].name] = r.travel[k];
+    Json intervals = Json::array();
+    for (const auto& i : r.intervals)
+      intervals.push_back({{"robot", i.robot}, {"activity", json_io::enum_to_string(i.activity)},
+                           {"from", i.from_s}, {"to", i.to_s}});
     Json j = {{"mission", o.file},
               {"body", o.body},
               {"completed", r.completed},
@@ -141,15 +153,21 @@ int run_run(const RunOptions& o) {
               {"travel", travel},
               {"makespan_planned", r.makespan_planned},
               {"replans", r.replans},
-              {"plan_cache_hits", r.plan_cache_hits}};
+              {"plan_cache_hits", r.plan_cache_hits},
+              {"intervals", intervals}};
     fmt::print("{}\n", json_io::dump_text(j, 2));
   } else {
     for (const auto& e : r.events)
       fmt::print("  t={:8.2f} s  {:<6} -> {}\n", e.time_s, e.event, e.state_after);
     fmt::print("{} at t={:.2f} s in state {}\n", r.completed ? "mission complete" : r.reason,
                r.time_s, r.final_state);
-    for (std::size_t k = 0; k < m.robots.size(); ++k)
-      fmt::print("  robot {}: travelled {:.3f} m\n", m.robots[k].name, r.travel[k]);
+    for (std::size_t k = 0; k < m.robots.size(); ++k) {
+      const std::string& n = m.robots[k].name;
+      fmt::print("  robot {}: travelled {:.3f} m; busy {:.2f} s, waiting for the supervisor {:.2f} s, "
+                 "for a task {:.2f} s\n", n, r.travel[k], time_in(r, n, sm::Activity::busy),
+                 time_in(r, n, sm::Activity::waiting_for_supervisor),
+                 time_in(r, n, sm::Activity::waiting_for_task));
+    }
     fmt::print("  planned makespan {:.3f} m\n", r.makespan_planned);
   }
   return r.completed ? 0 : 1;

@@ -21,7 +21,8 @@ struct Observed {
   BOOST_HANA_DEFINE_STRUCT(Observed,
       (sm::RunResult, result),
       (std::vector<sm::EventRecord>, events),
-      (std::vector<sm::StepRecord>, steps));
+      (std::vector<sm::StepRecord>, steps),
+      (std::vector<sm::IntervalRecord>, intervals));
 };
 
 class Recorder final : public sm::RunObserver {
@@ -29,6 +30,7 @@ class Recorder final : public sm::RunObserver {
   explicit Recorder(Observed& out) : out_(out) {}
   void on_event(const sm::EventRecord& e) override { out_.events.push_back(e); }
   void on_step(const sm::StepRecord& s) override { out_.steps.push_back(s); }
+  void on_interval(const sm::IntervalRecord& i) override { out_.intervals.push_back(i); }
 
  private:
   Observed& out_;

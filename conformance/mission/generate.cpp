@@ -194,7 +194,8 @@ rc::Gen<sm::Mission> small_allocation_mission() {
   });
 }
 
-sm::Mission allocation_mission_at(const std::vector<sm::Point>& starts, const std::vector<sm::Point>& points) {
+sm::Mission allocation_mission_at(const std::vector<sm::Point>& starts, const std::vector<sm::Point>& points,
+                                  std::size_t capacity, std::size_t per_robot) {
   const std::size_t robots = starts.size(), tasks = points.size();
   sm::Mission m = skeleton(robots, starts, points);
   for (std::size_t t = 0; t < tasks; ++t)
@@ -237,9 +238,12 @@ sm::Mission allocation_mission_at(const std::vector<sm::Point>& starts, const st
         queue.push_back(std::move(next));
       }
     };
+    std::size_t working = 0;
+    for (const auto v : s) working += v >= 2 ? 1 : 0;
     for (std::size_t r = 0; r < robots; ++r) {
-      bool busy = false;
-      for (const auto v : s) busy = busy || v == 2 + r;
+      std::size_t mine = 0;
+      for (const auto v : s) mine += v == 2 + r ? 1 : 0;
+      const bool busy = working >= capacity || mine >= per_robot;
       for (std::size_t t = 0; t < tasks; ++t) {
         if (s[t] == 2 + r) {
           auto next = s;

@@ -17,6 +17,8 @@
 //   on an idle robot, "r<r>f<t>" (uncontrollable, entry into the 2 m square around the task) ends
 //   it; marked: all done. Task points and starts uniform in [-20, 20]^2 from `seed`.
 #include <cstdint>
+#include <string>
+#include <vector>
 #include <rapidcheck.h>
 
 #include "spec/mission/mission.hpp"
@@ -41,12 +43,28 @@ rc::Gen<RunCase> run_case();
 
 swarmcheck::mission::Mission allocation_mission(std::size_t robots, std::size_t tasks,
                                           std::uint64_t seed);
-// The same supervisor with the given start and task points.
+// The same supervisor with the given start and task points; at most `capacity` tasks are in
+// progress at once, and at most `per_robot` of them on one robot (with 2, a robot may be given its
+// next task before it has finished the one it is on).
 swarmcheck::mission::Mission allocation_mission_at(const std::vector<swarmcheck::mission::Point>& starts,
-                                                   const std::vector<swarmcheck::mission::Point>& tasks);
+                                                   const std::vector<swarmcheck::mission::Point>& tasks,
+                                                   std::size_t capacity = SIZE_MAX, std::size_t per_robot = 1);
 // A small one for brute force: 2..3 robots, 2..3 tasks (not both 3), points on the 3-4-5
 // lattice (ties) or on integer points of [-10, 10]^2. Many paths reach one (state, positions)
 // node with different travel: the planner's dominance test matters.
 rc::Gen<swarmcheck::mission::Mission> small_allocation_mission();
+
+// Concurrent execution (tests/mission/concurrent_test.cpp): an allocation mission of 1..3 robots
+// and 1..4 tasks, at most 1..robots tasks in progress at once and 1 or 2 on one robot, in an
+// obstacle-free world laid out so that no straight leg between starts and tasks enters another
+// task's square (the tasks near a circle of radius 8..12 m, the starts within 3 m of its centre;
+// half the time on a symmetric layout, so that assignments tie); the kinematic body, dt
+// 0.05..0.2 s, speed 0.5..2 m/s, an hour of time.
+rc::Gen<RunCase> concurrent_case();
+// "The same plan robot by robot": the mission whose supervisor is the single path of `plan`'s
+// events stably sorted by robot (robot 0's events first, in plan order, then robot 1's, ...);
+// its alphabet is the mission's. Running it executes the plan one robot after another.
+swarmcheck::mission::Mission robot_by_robot(const swarmcheck::mission::Mission& m,
+                                            const std::vector<std::string>& plan);
 
 }  // namespace swarmcheck::conformance::mission

@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cstdint>
 #include <deque>
 #include <optional>
 #include <stdexcept>
@@ -38,8 +39,10 @@ struct RobotSim {
   sm::Point leg{};                      // the leg's waypoint: the front task, or a detour point
   bool leg_is_task = false;
   std::optional<std::size_t> last_task; // the task it was sent to last
+  double planned = 0.0;                 // the cost model's travel of the tasks it was sent to
   double travelled = 0.0;
   bool blocked = false;
+  std::optional<sm::IntervalRecord> interval;  // its activity so far
 };
 
 struct Proposal {
@@ -90,8 +93,9 @@ class Runner {
 
   RunResult run() {
     for (const auto& e : sm::initial_entries(m_)) fire(e, 0.0);
-    const auto first = planner_.plan(query());
+    const auto first = ask();
     result_.makespan_planned = first.found ? first.cost.makespan : 0.0;
+    if (first.found) plan_ = first.events;
     step_record(0.0);
     double t = 0.0;
     const auto steps_max = static_cast<long long>(o_.max_time_s / o_.dt_s);
@@ -106,8 +110,9 @@ class Runner {
         result_.reason = fmt::format("time limit of {} s reached", o_.max_time_s);
         break;
       }
+      const double before = t;
       t = static_cast<double>(k + 1) * o_.dt_s;
-      if (!move(t)) {
+      if (!move(before, t)) {
         result_.reason = deadlock_reason();
         break;
       }
@@ -116,25 +121,33 @@ class Runner {
     result_.final_state = state_;
     result_.time_s = t;
     for (const auto& r : robots_) result_.travel.push_back(r.travelled);
+    for (const auto& r : robots_)
+      if (r.interval) report(*r.interval);
     result_.plan_cache_hits = planner_.cache_hits();
     return result_;
   }
 
  private:
+  sm::Point plan_point(std::size_t i) const {
+    const auto& last = robots_[i].last_task;
+    return last ? m_.tasks[*last].at : m_.robots[i].start;
+  }
+
   sm::PlanQuery query() const {
     sm::PlanQuery q;
     q.from = state_;
-    for (const auto& r : robots_) {
-      double to_go = 0.0;
-      sm::Point at = r.pos;
-      for (const auto t : r.queue) {
-        to_go += sm::distance(at, m_.tasks[t].at);
-        at = m_.tasks[t].at;
-      }
-      q.positions.push_back(r.last_task ? m_.tasks[*r.last_task].at : r.pos);
-      q.travel.push_back(to_go);
+    for (std::size_t i = 0; i < robots_.size(); ++i) {
+      q.positions.push_back(plan_point(i));
+      q.travel.push_back(robots_[i].planned);
     }
     return q;
+  }
+
+  sm::Plan ask() {
+    if (asked_) ++result_.replans;
+    asked_ = true;
+    fresh_plan_ = true;
+    return planner_.plan(query());
   }
 
   bool has_controllable() const {
@@ -143,28 +156,92 @@ class Runner {
     return false;
   }
 
-  // Issues the planned controllable events; false when the run must stop.
+  bool reaches_marked(const std::vector<std::string>& events) const {
+    const auto end = sm::fire_all(m_, state_, events);
+    return end && sm::is_marked(m_, *end);
+  }
+
+  // The plan's event to issue now and the plan after it (spec rule 1b), or nothing.
+  std::optional<std::pair<std::string, std::vector<std::string>>> issuable() const {
+    const auto& p = *plan_;
+    std::vector<std::uint8_t> seen(robots_.size(), 0);  // robots with an earlier event in p
+    std::vector<std::string> rest;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      const std::size_t robot = m_.events.at(p[i]).robot;
+      const bool first_own = !seen[robot];
+      seen[robot] = 1;
+      if (!first_own || !m_.fsm.events.at(p[i]).controllable) continue;
+      const auto after = swarmcheck::supervisor::successor(m_.fsm, state_, p[i]);
+      if (!after) continue;
+      rest.assign(p.begin(), p.begin() + static_cast<std::ptrdiff_t>(i));
+      rest.insert(rest.end(), p.begin() + static_cast<std::ptrdiff_t>(i) + 1, p.end());
+      const auto end = sm::fire_all(m_, *after, rest);
+      if (end && sm::is_marked(m_, *end)) return std::make_pair(p[i], std::move(rest));
+      // The same tasks per robot, interleaved another way the supervisor allows from here.
+      if (auto other = sm::path_with_assignment(m_, *after, sm::task_sequences(m_, rest)))
+        return std::make_pair(p[i], std::move(*other));
+    }
+    return std::nullopt;
+  }
+
+  // Issues every controllable event the plan schedules and the supervisor allows now (spec rule
+  // 1); false when the run must stop.
   bool choose(double t) {
     while (!sm::is_marked(m_, state_) && has_controllable()) {
-      const sm::Plan p = planner_.plan(query());
-      ++result_.replans;
-      if (!p.found) {
-        result_.reason = "no marked state is reachable from state " + state_;
-        return false;
+      if (!fresh_plan_ || !plan_) {
+        const sm::PlanQuery q = query();
+        const sm::Plan p = ask();
+        if (!p.found) {
+          result_.reason = "no marked state is reachable from state " + state_;
+          return false;
+        }
+        // The plan in hand is kept unless the new optimum is strictly better.
+        if (!plan_ || sm::better(p.cost, sm::evaluate_path(m_, q, *plan_).cost)) {
+          plan_ = p.events;
+          settled_ = false;
+        }
       }
-      const std::string& e = p.events.front();
-      if (!m_.fsm.events.at(e).controllable) break;
+      if (settled_) break;  // nothing changed since the last choice found nothing to issue
+      auto next = issuable();
+      if (!next) {
+        settled_ = true;
+        break;
+      }
+      const std::string e = next->first;
+      plan_ = std::move(next->second);
+      plan_->insert(plan_->begin(), e);
       const sm::Meaning& mn = m_.events.at(e);
-      robots_[mn.robot].queue.push_back(mn.target);
-      robots_[mn.robot].last_task = mn.target;
+      RobotSim& r = robots_[mn.robot];
+      r.planned += sm::distance(plan_point(mn.robot), m_.tasks[mn.target].at);
+      r.queue.push_back(mn.target);
+      r.last_task = mn.target;
       fire(e, t);
     }
     return true;
   }
 
+  void report(const sm::IntervalRecord& rec) {
+    if (obs_) obs_->on_interval(rec);
+    result_.intervals.push_back(rec);
+  }
+
+  // Extends each robot's activity interval over (from, to], or closes it and opens another.
+  void account(const std::vector<sm::Activity>& did, double from, double to) {
+    for (std::size_t i = 0; i < robots_.size(); ++i) {
+      auto& open = robots_[i].interval;
+      if (open && open->activity == did[i]) {
+        open->to_s = to;
+        continue;
+      }
+      if (open) report(*open);
+      open = sm::IntervalRecord{m_.robots[i].name, did[i], from, to};
+    }
+  }
+
   // One step of motion; false when nothing could move and no event fired (deadlock).
-  bool move(double t) {
+  bool move(double before, double t) {
     bool progress = false;
+    std::vector<sm::Activity> did(robots_.size(), sm::Activity::waiting_for_task);
     for (std::size_t i = 0; i < robots_.size(); ++i) {
       RobotSim& r = robots_[i];
       r.blocked = false;
@@ -174,8 +251,10 @@ class Runner {
       const auto entries = sm::entry_events(m_, i, r.pos, p.pos);
       if (!sm::fire_all(m_, state_, entries)) {
         r.blocked = true;
+        did[i] = sm::Activity::waiting_for_supervisor;
         continue;
       }
+      did[i] = sm::Activity::busy;
       progress = true;
       r.travelled += sm::distance(r.pos, p.pos);
       r.pos = p.pos;
@@ -188,6 +267,7 @@ class Runner {
       }
       for (const auto& e : entries) fire(e, t);
     }
+    account(did, before, t);
     return progress;
   }
 
@@ -199,8 +279,15 @@ class Runner {
     const sm::Point task = m_.tasks[r.queue.front()].at;
     r.leg = task;
     r.leg_is_task = true;
-    const sm::Plan p = planner_.plan(query());
-    for (const auto& e : p.events) {
+    if (!plan_) {
+      const sm::Plan p = ask();
+      if (p.found) {
+        plan_ = p.events;
+        settled_ = false;
+      }
+    }
+    if (!plan_) return;
+    for (const auto& e : *plan_) {
       const sm::Meaning& mn = m_.events.at(e);
       if (mn.robot != i) continue;
       if (mn.kind != sm::MeaningKind::region_entry) break;
@@ -240,6 +327,17 @@ class Runner {
     // Only enabled events fire: a planned one that is not is a bug of the planner (exit 3).
     if (!next) throw std::logic_error("planned event " + e + " is not enabled in state " + state_);
     state_ = *next;
+    fresh_plan_ = false;
+    settled_ = false;
+    if (plan_) {  // the plan loses e, or is dropped when the rest is no longer a plan from here
+      const auto at = std::find(plan_->begin(), plan_->end(), e);
+      if (at == plan_->end()) {
+        plan_.reset();
+      } else {
+        plan_->erase(at);
+        if (!reaches_marked(*plan_)) plan_.reset();
+      }
+    }
     const sm::Meaning& mn = m_.events.at(e);
     EventRecord rec{t, e, m_.robots[mn.robot].name, m_.fsm.events.at(e).controllable, state_};
     if (obs_) obs_->on_event(rec);
@@ -262,6 +360,10 @@ class Runner {
   ex::RobotParams rp_{};
   Planner planner_;
   std::string state_;
+  std::optional<std::vector<std::string>> plan_;  // the current plan's events not yet fired
+  bool asked_ = false;                            // the planner was asked at least once
+  bool fresh_plan_ = false;                       // asked since the last event fired
+  bool settled_ = false;  // the choice found nothing to issue, and no event fired since
   std::vector<RobotSim> robots_;
   RunResult result_;
 };

@@ -51,6 +51,13 @@ void TraceWriter::on_step(const StepRecord& s) {
   out_ << j.dump() << '\n';
 }
 
+void TraceWriter::on_interval(const swarmcheck::mission::IntervalRecord& i) {
+  const Json j = {{"type", "interval"}, {"robot", i.robot},
+                  {"activity", json_io::enum_to_string(i.activity)},
+                  {"from", i.from_s}, {"to", i.to_s}};
+  out_ << j.dump() << '\n';
+}
+
 MissionTrace read_trace(std::istream& in, const std::string& source) {
   MissionTrace t;
   std::string line;
@@ -80,6 +87,14 @@ MissionTrace read_trace(std::istream& in, const std::string& source) {
         for (const auto& p : j.at("positions")) e.step.positions.push_back({p.at(0).get<double>(), p.at(1).get<double>()});
         for (const auto& b : j.at("blocked")) e.step.blocked.push_back(b.get<bool>());
         t.entries.push_back(std::move(e));
+      } else if (type == "interval") {
+        swarmcheck::mission::IntervalRecord i;
+        i.robot = j.at("robot").get<std::string>();
+        i.activity = json_io::enum_from_string<swarmcheck::mission::Activity>(
+            j.at("activity").get<std::string>(), where + ": activity");
+        i.from_s = j.at("from").get<double>();
+        i.to_s = j.at("to").get<double>();
+        t.intervals.push_back(std::move(i));
       } else {
         throw InputError(where, "unknown record type \"" + type + "\"");
       }
@@ -107,6 +122,7 @@ TraceFile::TraceFile(const std::string& path, const Mission& m, const RunOptions
 TraceFile::~TraceFile() = default;
 void TraceFile::on_event(const EventRecord& e) { state_->writer.on_event(e); }
 void TraceFile::on_step(const StepRecord& s) { state_->writer.on_step(s); }
+void TraceFile::on_interval(const IntervalRecord& i) { state_->writer.on_interval(i); }
 void TraceFile::commit() { state_->file.commit(); }
 
 }  // namespace swarmcheck::mission

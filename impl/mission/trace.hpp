@@ -5,6 +5,8 @@
 //    "initial_state":..,"robots":[names],"body":"unicycle"|"kinematic","dt":..}
 //   {"type":"event","t":..,"event":"a3s","robot":"A","kind":"c"|"uc","state":<state after>}
 //   {"type":"step","t":..,"state":..,"positions":[[x,y],..],"blocked":[false,..]}
+//   {"type":"interval","robot":"A","activity":"busy"|"waiting for the supervisor"|
+//    "waiting for a task","from":..,"to":..}      (as each robot's activity interval closes)
 // Doubles are written so that they read back to the same bits. The public TraceFile
 // (swarmcheck/mission.hpp) is a TraceWriter on an io::AtomicFile.
 #include <iosfwd>
@@ -25,6 +27,7 @@ class TraceWriter : public RunObserver {
   TraceWriter(std::ostream& out, const swarmcheck::mission::Mission& m, const RunOptions& o);
   void on_event(const EventRecord& e) override;
   void on_step(const StepRecord& s) override;
+  void on_interval(const swarmcheck::mission::IntervalRecord& i) override;
 
  private:
   std::ostream& out_;
@@ -40,6 +43,7 @@ struct MissionTrace {
   std::string initial_state;
   std::vector<std::string> robots;
   std::vector<TraceEntry> entries;
+  std::vector<swarmcheck::mission::IntervalRecord> intervals;  // in file order
 };
 
 // Reads a trace; a malformed line is an InputError at "source:line".

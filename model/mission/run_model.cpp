@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <bit>
 #include <cstdint>
+#include <optional>
 #include <set>
 #include <utility>
 
@@ -32,8 +33,10 @@ struct Robot {
   bool waypoint_is_task = false;
   bool sent = false;                // sent to a task at least once
   std::size_t sent_to = 0;          // the task it was sent to last
+  double planned_m = 0.0;           // the cost model's travel of the tasks it was sent to
   double travelled_m = 0.0;
   bool blocked = false;
+  std::optional<sm::IntervalRecord> open;  // its activity interval so far
 };
 
 // One robot's proposed step.
@@ -56,20 +59,23 @@ struct World {
   std::vector<Robot> robots;
   sm::RunResult result;
   std::set<QueryKey> remembered;    // for plan_cache_hits only
+  std::optional<std::vector<std::string>> current;  // P: the current plan's events not yet fired
+  bool asked = false;               // the planner was asked at least once
+  bool asked_since_event = false;   // ... since the last event fired
 };
+
+// Where robot i is for planning: the task it was sent to last, else its start.
+sm::Point plan_position(const World& w, std::size_t i) {
+  const Robot& r = w.robots[i];
+  return r.sent ? w.m.tasks[r.sent_to].at : w.m.robots[i].start;
+}
 
 sm::PlanQuery query(const World& w) {
   sm::PlanQuery out;
   out.from = w.q;
-  for (const Robot& r : w.robots) {
-    out.positions.push_back(r.sent ? w.m.tasks[r.sent_to].at : r.pos);
-    double committed = 0.0;
-    sm::Point from = r.pos;
-    for (const std::size_t t : r.tasks) {
-      committed += sm::distance(from, w.m.tasks[t].at);
-      from = w.m.tasks[t].at;
-    }
-    out.travel.push_back(committed);
+  for (std::size_t i = 0; i < w.robots.size(); ++i) {
+    out.positions.push_back(plan_position(w, i));
+    out.travel.push_back(w.robots[i].planned_m);
   }
   return out;
 }
@@ -87,7 +93,16 @@ sm::Plan ask(World& w) {
     if (w.remembered.size() >= sm::kPlanMemory) w.remembered.clear();
     w.remembered.insert(std::move(key));
   }
+  if (w.asked) ++w.result.replans;
+  w.asked = true;
+  w.asked_since_event = true;
   return w.plan(pq);
+}
+
+// The events left and whether they lead from q to a marked state.
+bool leads_to_marked(const World& w, const std::string& q, const std::vector<std::string>& events) {
+  const auto end = sm::fire_all(w.m, q, events);
+  return end && sm::is_marked(w.m, *end);
 }
 
 void fire(World& w, const std::string& e, double t) {
@@ -95,6 +110,17 @@ void fire(World& w, const std::string& e, double t) {
   // The plan function is the caller's: an event it plans that q does not enable is its bug.
   if (!next) throw std::logic_error("the planner's event " + e + " is not enabled in state " + w.q);
   w.q = *next;
+  w.asked_since_event = false;
+  if (w.current) {
+    auto& p = *w.current;
+    const auto at = std::find(p.begin(), p.end(), e);
+    if (at == p.end()) {
+      w.current.reset();
+    } else {
+      p.erase(at);
+      if (!leads_to_marked(w, w.q, p)) w.current.reset();
+    }
+  }
   sm::EventRecord rec;
   rec.time_s = t;
   rec.event = e;
@@ -123,31 +149,61 @@ bool enables_controllable(const World& w) {
   return false;
 }
 
+// Rule 1b: the event to issue now and the plan after it, or nothing.
+std::optional<std::pair<std::string, std::vector<std::string>>> issuable(const World& w) {
+  const std::vector<std::string>& p = *w.current;
+  for (std::size_t i = 0; i < p.size(); ++i) {
+    if (!w.m.fsm.events.at(p[i]).controllable) continue;
+    const auto after = swarmcheck::supervisor::successor(w.m.fsm, w.q, p[i]);
+    if (!after) continue;
+    const std::size_t robot = w.m.events.at(p[i]).robot;
+    bool first_own = true;
+    for (std::size_t j = 0; j < i; ++j) first_own = first_own && w.m.events.at(p[j]).robot != robot;
+    if (!first_own) continue;
+    std::vector<std::string> rest;
+    for (std::size_t j = 0; j < p.size(); ++j)
+      if (j != i) rest.push_back(p[j]);
+    if (leads_to_marked(w, *after, rest)) return std::make_pair(p[i], rest);
+    if (auto other = sm::path_with_assignment(w.m, *after, sm::task_sequences(w.m, rest)))
+      return std::make_pair(p[i], std::move(*other));
+  }
+  return std::nullopt;
+}
+
 // Rule 1; false when the run ends (no marked state reachable).
 bool choose(World& w, double t) {
   while (!sm::is_marked(w.m, w.q) && enables_controllable(w)) {
-    const sm::Plan p = ask(w);
-    ++w.result.replans;
-    if (!p.found) {
-      w.result.reason = "no marked state is reachable from state " + w.q;
-      return false;
+    if (!w.asked_since_event || !w.current) {
+      const sm::PlanQuery pq = query(w);
+      const sm::Plan p = ask(w);
+      if (!p.found) {
+        w.result.reason = "no marked state is reachable from state " + w.q;
+        return false;
+      }
+      if (!w.current || sm::better(p.cost, sm::evaluate_path(w.m, pq, *w.current).cost))
+        w.current = p.events;
     }
-    const std::string first = p.events.front();
-    if (!w.m.fsm.events.at(first).controllable) return true;
-    const sm::Meaning& start = w.m.events.at(first);
+    auto next = issuable(w);
+    if (!next) return true;
+    const std::string e = next->first;
+    w.current = std::move(next->second);
+    w.current->insert(w.current->begin(), e);
+    const sm::Meaning& start = w.m.events.at(e);
     Robot& r = w.robots[start.robot];
+    r.planned_m += sm::distance(plan_position(w, start.robot), w.m.tasks[start.target].at);
     r.tasks.push_back(start.target);
     r.sent = true;
     r.sent_to = start.target;
-    fire(w, first, t);
+    fire(w, e, t);
   }
   return true;
 }
 
 // The region robot i must enter before its task, if the plan says so (rule 3), else nothing.
-const sm::Region* detour_region(const World& w, const sm::Plan& p, std::size_t i) {
+const sm::Region* detour_region(const World& w, const std::vector<std::string>& plan,
+                                std::size_t i) {
   const Robot& r = w.robots[i];
-  for (const auto& e : p.events) {
+  for (const auto& e : plan) {
     const sm::Meaning& mn = w.m.events.at(e);
     if (mn.robot != i) continue;
     if (mn.kind != sm::MeaningKind::region_entry) return nullptr;
@@ -162,8 +218,11 @@ void start_leg(World& w, std::size_t i) {
   Robot& r = w.robots[i];
   r.waypoint = w.m.tasks[r.tasks.front()].at;
   r.waypoint_is_task = true;
-  const sm::Plan p = ask(w);
-  const sm::Region* g = detour_region(w, p, i);
+  if (!w.current) {
+    const sm::Plan p = ask(w);
+    if (p.found) w.current = p.events;
+  }
+  const sm::Region* g = w.current ? detour_region(w, *w.current, i) : nullptr;
   if (!g) return;
   for (std::size_t k = 0; k < 2; ++k) {
     const double margin = std::min(0.5, (g->hi[k] - g->lo[k]) / 4);
@@ -199,9 +258,28 @@ Move propose(const World& w, const Robot& r) {
   return mv;
 }
 
+void report(World& w, const sm::IntervalRecord& rec) {
+  if (w.observer) w.observer->on_interval(rec);
+  w.result.intervals.push_back(rec);
+}
+
+// Rule 3's activity: each robot's interval grows over (t_from, t_to] or closes and a new opens.
+void account(World& w, const std::vector<sm::Activity>& did, double t_from, double t_to) {
+  for (std::size_t i = 0; i < w.robots.size(); ++i) {
+    Robot& r = w.robots[i];
+    if (r.open && r.open->activity == did[i]) {
+      r.open->to_s = t_to;
+      continue;
+    }
+    if (r.open) report(w, *r.open);
+    r.open = sm::IntervalRecord{w.m.robots[i].name, did[i], t_from, t_to};
+  }
+}
+
 // Rule 3 for every robot; false when no robot moved.
-bool move_all(World& w, double t) {
+bool move_all(World& w, double t_from, double t) {
   bool moved = false;
+  std::vector<sm::Activity> did(w.robots.size(), sm::Activity::waiting_for_task);
   for (std::size_t i = 0; i < w.robots.size(); ++i) {
     Robot& r = w.robots[i];
     r.blocked = false;
@@ -211,8 +289,10 @@ bool move_all(World& w, double t) {
     const std::vector<std::string> entries = sm::entry_events(w.m, i, r.pos, mv.pos);
     if (!sm::fire_all(w.m, w.q, entries)) {
       r.blocked = true;
+      did[i] = sm::Activity::waiting_for_supervisor;
       continue;
     }
+    did[i] = sm::Activity::busy;
     moved = true;
     r.travelled_m += sm::distance(r.pos, mv.pos);
     r.pos = mv.pos;
@@ -225,6 +305,7 @@ bool move_all(World& w, double t) {
     }
     for (const auto& e : entries) fire(w, e, t);
   }
+  account(w, did, t_from, t);
   return moved;
 }
 
@@ -249,12 +330,13 @@ std::string deadlock_reason(const World& w) {
 sm::RunResult run_model(const sm::Mission& m, const sm::RunOptions& o, const PlanFunction& plan,
                         sm::RunObserver* observer) {
   SWARM_DEMAND(o.dt_s > 0);
-  World w{m, o, plan, observer, m.initial_state, {}, {}, {}};
+  World w{m, o, plan, observer, m.initial_state, {}, {}, {}, {}, false, false};
   w.robots.resize(m.robots.size());
   for (std::size_t i = 0; i < m.robots.size(); ++i) w.robots[i].pos = m.robots[i].start;
   for (const auto& e : sm::initial_entries(m)) fire(w, e, 0.0);
   const sm::Plan first = ask(w);
   w.result.makespan_planned = first.found ? first.cost.makespan : 0.0;
+  if (first.found) w.current = first.events;
   record_step(w, 0.0);
   double t = 0.0;
   const auto steps_max = static_cast<long long>(o.max_time_s / o.dt_s);
@@ -269,8 +351,9 @@ sm::RunResult run_model(const sm::Mission& m, const sm::RunOptions& o, const Pla
       w.result.reason = fmt::format("time limit of {} s reached", o.max_time_s);
       break;
     }
+    const double t_from = t;
     t = static_cast<double>(k + 1) * o.dt_s;
-    if (!move_all(w, t)) {
+    if (!move_all(w, t_from, t)) {
       w.result.reason = deadlock_reason(w);
       break;
     }
@@ -279,6 +362,8 @@ sm::RunResult run_model(const sm::Mission& m, const sm::RunOptions& o, const Pla
   w.result.final_state = w.q;
   w.result.time_s = t;
   for (const Robot& r : w.robots) w.result.travel.push_back(r.travelled_m);
+  for (const Robot& r : w.robots)
+    if (r.open) report(w, *r.open);
   return w.result;
 }
 

@@ -2,6 +2,9 @@
 #include "spec/mission/plan.hpp"
 
 #include <algorithm>
+#include <deque>
+#include <map>
+#include <utility>
 
 #include "spec/supervisor/automaton.hpp"
 
@@ -72,6 +75,38 @@ std::vector<std::vector<std::size_t>> task_sequences(const Mission& m,
       out[it->second.robot].push_back(it->second.target);
   }
   return out;
+}
+
+std::optional<std::vector<std::string>> path_with_assignment(
+    const Mission& m, const std::string& from, const std::vector<std::vector<std::size_t>>& tasks) {
+  using Node = std::pair<std::string, std::vector<std::size_t>>;  // state, tasks started per robot
+  std::map<Node, std::pair<Node, std::string>> parent;              // node -> (previous, event)
+  const Node start{from, std::vector<std::size_t>(tasks.size(), 0)};
+  std::deque<Node> open{start};
+  parent.emplace(start, std::make_pair(start, std::string()));
+  while (!open.empty()) {
+    const Node n = open.front();
+    open.pop_front();
+    bool done = is_marked(m, n.first);
+    for (std::size_t r = 0; r < tasks.size() && done; ++r) done = n.second[r] == tasks[r].size();
+    if (done) {
+      std::vector<std::string> path;
+      for (Node at = n; at != start; at = parent.at(at).first) path.push_back(parent.at(at).second);
+      std::reverse(path.begin(), path.end());
+      return path;
+    }
+    for (const auto& e : supervisor::enabled(m.fsm, n.first)) {
+      Node next{*supervisor::successor(m.fsm, n.first, e), n.second};
+      const Meaning& mn = m.events.at(e);
+      if (mn.kind == MeaningKind::task_start) {
+        std::size_t& done_r = next.second[mn.robot];
+        if (done_r == tasks[mn.robot].size() || tasks[mn.robot][done_r] != mn.target) continue;
+        ++done_r;
+      }
+      if (parent.emplace(next, std::make_pair(n, e)).second) open.push_back(std::move(next));
+    }
+  }
+  return std::nullopt;
 }
 
 }  // namespace swarmcheck::mission

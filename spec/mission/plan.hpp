@@ -63,4 +63,12 @@ PathEvaluation evaluate_path(const Mission& m, const PlanQuery& q,
 std::vector<std::vector<std::size_t>> task_sequences(const Mission& m,
                                                      const std::vector<std::string>& events);
 
+// A path of the FSM from `from` to a marked state whose task starts are, robot by robot, exactly
+// `tasks` (indices into m.tasks, in order); region entries are free. The shortest such path,
+// found breadth first over (state, each robot's progress), events taken in name order at each
+// state; nothing when there is none. Any such path has the cost of any other from one query
+// (travel depends on each robot's own order only).
+std::optional<std::vector<std::string>> path_with_assignment(
+    const Mission& m, const std::string& from, const std::vector<std::vector<std::size_t>>& tasks);
+
 }  // namespace swarmcheck::mission

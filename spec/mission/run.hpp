@@ -5,31 +5,54 @@
 // compares the two record for record, doubles by their bits.
 //
 // A robot has a pose (x, y, theta), a controller state, a queue of tasks (front first), a leg
-// (its waypoint, and whether the waypoint is the front task), the task it was sent to last, the
-// distance it travelled, and whether it was blocked in the last step. q is the FSM state.
+// (its waypoint, and whether the waypoint is the front task), the task it was sent to last, its
+// planned travel, the distance it travelled, and whether it was blocked in the last step. q is
+// the FSM state; P is the current plan (its events not yet fired, a path of the FSM from q to a
+// marked state), or none.
+//
+// Planned travel (the plan's cost model, spec/mission/plan.hpp, applied to what was issued): 0,
+// plus, at each task start issued to the robot, the distance from its start or the task it was
+// sent to before to the new task (the same additions in the same order as the planner makes, so
+// the current plan's cost at a replan is the first plan's, bit for bit).
 //
 // The plan query at any moment: from q; per robot, the point of the task it was sent to last
-// (its current position if none), and as committed travel the length of the straight lines from
-// its current position through its queued tasks, in order. Plans are exact (spec/mission/plan.hpp;
-// among plans of equal cost the planner's own order decides, so a runner takes its planner as
-// given). A query equal bit for bit to one remembered counts as a cache hit (plan_cache_hits);
-// a new query is remembered, and when kPlanMemory are remembered already they are all forgotten
-// first.
+// (its start if none) and its planned travel. Plans are exact (spec/mission/plan.hpp; among
+// plans of equal cost the planner's own order decides, so a runner takes its planner as given).
+// A query equal bit for bit to one remembered counts as a cache hit (plan_cache_hits); a new
+// query is remembered, and when kPlanMemory are remembered already they are all forgotten first.
+// Every query after the first plan counts as a replan (replans).
 //
-// Time 0: the entry events of the start positions fire (initial_entries); the first plan gives
-// makespan_planned (0 if none); a step record at t = 0. Then for k = 0, 1, 2, ..., with t = 0
-// at first and then the t' of the step before:
-//  1. Choice. While q is not marked and enables a controllable event: plan (one replan each);
-//     no plan ends the run ("no marked state is reachable from state q"). If the plan's first
-//     event is controllable, it is a task start: that robot queues the task and was sent to it
-//     last, the event fires at t, and the choice goes on; otherwise it stops (wait).
+// Firing an event e (issued or entered): q moves on; P (if any) loses the first occurrence of e
+// when what remains fires in turn from the new q to a marked state (fire_all, is_marked), and
+// otherwise becomes none (e is not in P, or came in an order the rest of P cannot follow: a
+// region entry the plan did not expect).
+//
+// Time 0: the entry events of the start positions fire (initial_entries); the first plan becomes
+// P (none if no plan is found) and gives makespan_planned (0 if none); a step record at t = 0.
+// Then for k = 0, 1, 2, ..., with t = 0 at first and then the t' of the step before:
+//  1. Choice. While q is not marked and enables a controllable event:
+//     a. When an event fired since the last query, or P is none: replan. No plan ends the run
+//        ("no marked state is reachable from state q"). The new plan becomes P only when P is
+//        none or the new plan's cost is strictly better (spec `better`) than P's cost from the
+//        same query (evaluate_path): otherwise P, and with it the assignment, is kept.
+//     b. Issue: the first event e = P[i] of P (in plan order) that is controllable, enabled in
+//        q, and whose robot has no event before it in P, and after which the plan's assignment
+//        can still be completed: with R = P without P[i], either R is a path from q' = delta(q,
+//        e) to a marked state (e moved first, everything else in plan order), or else
+//        path_with_assignment(q', task_sequences(R)) finds one (spec/mission/plan.hpp: the same
+//        tasks per robot in the same order, so the same cost, events interleaved otherwise),
+//        which replaces R. e is a task start: that robot queues the task and was sent to it
+//        last, its planned travel grows, P becomes e followed by R, e fires at t (so P becomes
+//        R), and the choice goes on. No such event: the choice stops (every robot whose next
+//        planned event is uncontrollable, or not yet possible, waits while the others work).
 //  2. End: q marked ends it ("mission complete"); k >= floor(max_time / dt) ends it ("time limit
 //     of T s reached", T as fmt's {} prints max_time_s).
 //  3. Motion to t' = (k + 1) dt (computed as the double (k + 1) times dt), robots in index order,
 //     a robot without queued tasks idle. A robot with tasks and no leg starts one: its front task,
-//     unless the plan asked now has as this robot's first own event the entry into a region that
-//     contains neither the task nor the robot; then the point of that region nearest to it, a
-//     margin inside (per axis, its coordinate clamped to [lo + m, hi - m], m = min(0.5, side / 4)).
+//     unless the plan P (when P is none, a plan is asked now and becomes P if found) has as this
+//     robot's first own event the entry into a region that contains neither the task nor the
+//     robot; then the point of that region nearest to it, a margin inside (per axis, its
+//     coordinate clamped to [lo + m, hi - m], m = min(0.5, side / 4)).
 //     It proposes a pose: `kinematic`, a straight line at speed_m_per_s, landing on the waypoint
 //     when it is within one step; `unicycle`, the exploration controller_step then body_step
 //     over dt (the waypoint's flag is 1 until the controller has taken it). If the entry events
@@ -38,9 +61,15 @@
 //     arrival at a task that task leaves its queue (and the leg ends), and the entry events fire
 //     at t'. If no robot moved, the run ends in a deadlock, whose reason lists q's enabled events
 //     and, per blocked robot, the entry events of its proposal q does not enable.
+//     Activity: over (t, t'] each robot is `busy` (it moved), `waiting for the supervisor` (it
+//     has queued tasks and was blocked) or `waiting for a task` (no queued task). An interval is
+//     a maximal run of steps of one robot with one activity; when a robot's activity changes,
+//     its interval so far closes (to = t) and is reported, robots in index order, before the
+//     step record. This is done for the deadlocked step too.
 //  4. A step record at t'.
 // At the end: final_state = q, time_s = the t' of the last motion step tried (0 if none; a
-// deadlocked step counts), travel per robot.
+// deadlocked step counts), travel per robot, and the open intervals close at time_s and are
+// reported, robots in index order (no motion step: no intervals).
 #include <array>
 #include <boost/hana.hpp>
 #include <cstddef>
@@ -84,11 +113,23 @@ struct StepRecord {
       (std::vector<bool>, blocked));  // kept its pose because an entry event was not enabled
 };
 
+// What a robot did over a step (rule 3): `busy` moved; the two kinds of waiting.
+enum class Activity { busy, waiting_for_supervisor, waiting_for_task };
+
+struct IntervalRecord {
+  BOOST_HANA_DEFINE_STRUCT(IntervalRecord,
+      (std::string, robot),
+      (Activity, activity),
+      (double, from_s),
+      (double, to_s));
+};
+
 class RunObserver {
  public:
   virtual ~RunObserver() = default;
   virtual void on_event(const EventRecord& e) = 0;
   virtual void on_step(const StepRecord& s) = 0;  // after time 0's events, then after each step
+  virtual void on_interval(const IntervalRecord&) {}  // as each interval closes
 };
 
 struct RunResult {
@@ -101,7 +142,8 @@ struct RunResult {
       (std::vector<double>, travel),     // per robot, metres actually driven
       (double, makespan_planned),        // of the first plan
       (std::size_t, replans),
-      (std::size_t, plan_cache_hits));
+      (std::size_t, plan_cache_hits),
+      (std::vector<IntervalRecord>, intervals));  // in the order they closed
   RunResult() : completed(false), time_s(0.0), makespan_planned(0.0), replans(0), plan_cache_hits(0) {}
 };
 
@@ -115,5 +157,12 @@ struct EnumNames<swarmcheck::mission::BodyModel> {
   static constexpr std::array<std::pair<swarmcheck::mission::BodyModel, std::string_view>, 2> names{
       {{swarmcheck::mission::BodyModel::unicycle, "unicycle"},
        {swarmcheck::mission::BodyModel::kinematic, "kinematic"}}};
+};
+template <>
+struct EnumNames<swarmcheck::mission::Activity> {
+  static constexpr std::array<std::pair<swarmcheck::mission::Activity, std::string_view>, 3> names{
+      {{swarmcheck::mission::Activity::busy, "busy"},
+       {swarmcheck::mission::Activity::waiting_for_supervisor, "waiting for the supervisor"},
+       {swarmcheck::mission::Activity::waiting_for_task, "waiting for a task"}}};
 };
 }  // namespace swarmcheck::json_io

@@ -45,6 +45,15 @@ RC_GTEST_PROP(MissionConformance, ImplRunEqualsModelRunOnGeneratedMissions, ()) 
   }
 }
 
+// The concurrent cases (allocation supervisors, several robots at work): the same, record for record.
+RC_GTEST_PROP(MissionConformance, ImplRunEqualsModelRunOnGeneratedConcurrentMissions, ()) {
+  const cm::RunCase c = *cm::concurrent_case();
+  if (const auto d = cm::diff_run(c.mission, c.options)) {
+    const auto cex = cm::write_counterexample(cex_dir(), "concurrent", c.mission, c.options, *d);
+    RC_FAIL(*d + "\nreplay: " + cex.command);
+  }
+}
+
 // The thesis mission, both bodies, to the end (8 434 unicycle steps): record for record.
 TEST(MissionConformance, ThesisMissionRunsTheSameOnImplAndModel) {
   const sm::Mission m = sm::load_mission(SWARMCHECK_SCENARIOS "/thesis/thesis-mission.json");

@@ -20,6 +20,18 @@ namespace sm = swarmcheck::mission;
 namespace im = swarmcheck::impl::mission;
 const std::string kMission = SWARMCHECK_SCENARIOS "/thesis/thesis-mission.json";
 
+std::size_t position_of(const sm::RunResult& r, const std::string& event) {
+  for (std::size_t k = 0; k < r.events.size(); ++k)
+    if (r.events[k].event == event) return k;
+  ADD_FAILURE() << event << " never fired";
+  return r.events.size();
+}
+
+double time_of(const sm::RunResult& r, const std::string& event) {
+  const std::size_t k = position_of(r, event);
+  return k < r.events.size() ? r.events[k].time_s : -1.0;
+}
+
 // Replays a trace; returns "" when it is consistent, else the first broken rule.
 std::string replay(const sm::Mission& m, const im::MissionTrace& t) {
   std::string state = t.initial_state;
@@ -63,11 +75,23 @@ void run_and_replay(sm::BodyModel body) {
   EXPECT_EQ(r.reason, "mission complete");
   const auto t = im::read_trace(trace, "trace");
   EXPECT_EQ(replay(m, t), "");
-  // The robots did the planned tasks: A 3 then 4, B 1 then 2.
+  // The robots did the planned tasks: A 3 then 4, B 1 then 2; B starts as soon as the
+  // supervisor allows it (state s14, A on its way to task 3), not after A's tasks.
   std::vector<std::string> starts;
   for (const auto& e : r.events)
     if (e.controllable) starts.push_back(e.event);
-  EXPECT_EQ(starts, (std::vector<std::string>{"a3s", "a4s", "b1s", "b2s"}));
+  EXPECT_EQ(starts, (std::vector<std::string>{"a3s", "b1s", "b2s", "a4s"}));
+  EXPECT_EQ(r.events[position_of(r, "b1s") - 1].state_after, "s14");
+  EXPECT_LT(position_of(r, "b1s"), position_of(r, "a3f"));
+  EXPECT_LT(position_of(r, "b1s"), position_of(r, "a4f"));
+  EXPECT_LT(time_of(r, "b1s"), time_of(r, "a4f"));
+  // The trace's intervals are the result's, and B was busy before A's last task ended.
+  EXPECT_EQ(t.intervals.size(), r.intervals.size());
+  bool b_busy_early = false;
+  for (const auto& i : t.intervals)
+    b_busy_early = b_busy_early || (i.robot == "B" && i.activity == sm::Activity::busy &&
+                                    i.from_s < time_of(r, "a4f"));
+  EXPECT_TRUE(b_busy_early);
 }
 
 TEST(MissionRun, ThesisMissionCompletesWithUnicycleBodiesAndItsTraceReplays) {
@@ -115,6 +139,41 @@ TEST(MissionRun, TraceFileAppearsWholeOnCommitOnly) {
   EXPECT_EQ(events, r.events.size());
   EXPECT_EQ(replay(m, t), "");
   std::filesystem::remove_all(dir);
+}
+
+// Issue 14's three-robot case: a supervisor that lets one robot work at a time, and a plan that
+// gives each robot one task (20 m each). The robot that finishes first sits within 4.5 m of the
+// other tasks; execution must still follow the plan (before, one robot did all three).
+void three_robots(sm::BodyModel body) {
+  const auto m = sm::load_mission(SWARMCHECK_SCENARIOS "/examples/three-robots.json");
+  const sm::Plan p = sm::Planner(m).plan(sm::initial_query(m));
+  ASSERT_TRUE(p.found);
+  EXPECT_EQ(p.cost.makespan, 20.0);
+  const auto planned = sm::task_sequences(m, p.events);
+  EXPECT_EQ(planned, (std::vector<std::vector<std::size_t>>{{0}, {1}, {2}}));
+  sm::RunOptions o;
+  o.body = body;
+  std::stringstream trace;
+  im::TraceWriter writer(trace, m, o);
+  const auto r = sm::run_mission(m, o, &writer);
+  ASSERT_TRUE(r.completed) << r.reason;
+  EXPECT_EQ(replay(m, im::read_trace(trace, "trace")), "");
+  std::vector<std::string> starts;
+  for (const auto& e : r.events)
+    if (e.controllable) starts.push_back(e.event);
+  EXPECT_EQ(sm::task_sequences(m, starts), planned);
+  for (std::size_t k = 0; k < 3; ++k) {
+    EXPECT_GT(r.travel[k], 19.0) << m.robots[k].name;  // each drove to its own task
+    EXPECT_LT(r.travel[k], 21.0) << m.robots[k].name;
+  }
+}
+
+TEST(MissionRun, ThreeRobotsOneAtATimeEachDoesThePlannedTaskKinematic) {
+  three_robots(sm::BodyModel::kinematic);
+}
+
+TEST(MissionRun, ThreeRobotsOneAtATimeEachDoesThePlannedTaskUnicycle) {
+  three_robots(sm::BodyModel::unicycle);
 }
 
 TEST(MissionRun, TimeLimitIsReported) {

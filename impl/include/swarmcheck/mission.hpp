@@ -62,6 +62,7 @@ class TraceFile final : public RunObserver {
   ~TraceFile() override;
   void on_event(const EventRecord& e) override;
   void on_step(const StepRecord& s) override;
+  void on_interval(const IntervalRecord& i) override;
   void commit();
 
  private:
