@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <nlohmann/json.hpp>
 
 #include "tests/fmi/scratch.hpp"
@@ -148,4 +149,15 @@ TEST(FmiCli, ExportRefusesImpossibleRequestsWithStatusTwo) {
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.out.find("--robots"), std::string::npos) << r.out;
   EXPECT_FALSE(fs::exists(f.dir / "b.fmu"));
+}
+
+TEST(FmiCli, TheCommittedThesisMultiModelIsWhatExportWrites) {
+  Folder f;   // exported the default scenario into mm/
+  const std::string committed = std::string(SWARMCHECK_SOURCE_DIR) + "/scenarios/thesis/intocps/";
+  for (const char* file : {"multimodel.json", "coe.json"}) {
+    std::ifstream a(committed + file), b(f.dir / "mm" / file);
+    const std::string x{std::istreambuf_iterator<char>(a), {}}, y{std::istreambuf_iterator<char>(b), {}};
+    EXPECT_FALSE(x.empty()) << file;
+    EXPECT_EQ(x, y) << file << " differs: run `swarmcheck fmu export --intocps scenarios/thesis/intocps`";
+  }
 }
