@@ -149,7 +149,30 @@ Master::Master(const MultiModel& mm, const CoSimConfig& config, Algorithm algori
     if (v->type != VarType::real && !p.integral)
       throw InputError(mm.file + ": " + p.where, p.port.variable + " is " + to_string(v->type) + ": expected an integer");
   }
-  // Instantiate, parameters, initialisation.
+  // Instantiate, parameters, initialisation; on a failure, every instance made so far is freed
+  // before the libraries close (the destructor does not run for a constructor that throws).
+  try {
+    start(mm, config);
+  } catch (...) {
+    release();
+    throw;
+  }
+  for (std::size_t k = 0; k < instances_.size(); ++k) {
+    for (const ModelVariable& v : instances_[k]->library->description().variables) {
+      if (v.causality != "output" || (v.type != VarType::real && v.type != VarType::integer)) continue;
+      output_names_.push_back(instances_[k]->label + "." + v.name);
+      outputs_.push_back(Port{k, v.value_reference, v.type});
+    }
+  }
+}
+
+void Master::start(const MultiModel& mm, const CoSimConfig& config) {
+  const auto variable = [&](const PortName& p) -> std::pair<std::size_t, const ModelVariable*> {
+    for (std::size_t k = 0; k < instances_.size(); ++k)
+      if (instances_[k]->fmu_key == p.fmu && instances_[k]->name == p.instance)
+        return {k, instances_[k]->library->description().find(p.variable)};
+    return {0, nullptr};
+  };
   for (auto& in : instances_) {
     const ModelDescription& md = in->library->description();
     in->component = in->library->api().instantiate(in->label.c_str(), fmi2CoSimulation, md.guid.c_str(),
@@ -161,7 +184,7 @@ Master::Master(const MultiModel& mm, const CoSimConfig& config, Algorithm algori
           "fmi2SetupExperiment");
   }
   for (const Parameter& p : mm.parameters) {
-    const auto [k, v] = variable(p.port, p.where);
+    const auto [k, v] = variable(p.port);   // checked in the constructor
     Instance& in = *instances_[k];
     const fmi2ValueReference vr = v->value_reference;
     int status = fmi2OK;
@@ -182,22 +205,18 @@ Master::Master(const MultiModel& mm, const CoSimConfig& config, Algorithm algori
   for (auto& in : instances_)
     check(in->library->api().exit_initialization_mode(in->component), *in, "fmi2ExitInitializationMode");
   for (auto& in : instances_) fetch_outputs(*in);
-  for (std::size_t k = 0; k < instances_.size(); ++k) {
-    for (const ModelVariable& v : instances_[k]->library->description().variables) {
-      if (v.causality != "output" || (v.type != VarType::real && v.type != VarType::integer)) continue;
-      output_names_.push_back(instances_[k]->label + "." + v.name);
-      outputs_.push_back(Port{k, v.value_reference, v.type});
-    }
-  }
 }
 
-Master::~Master() {
+void Master::release() {
   for (auto& in : instances_) {
     if (!in->component) continue;
     in->library->api().terminate(in->component);
     in->library->api().free_instance(in->component);
+    in->component = nullptr;
   }
 }
+
+Master::~Master() { release(); }
 
 double Master::time_s() const { return config_.start_s + static_cast<double>(steps_) * config_.step_s; }
 

@@ -60,6 +60,8 @@ class Master {
     if (status != 0 /* fmi2OK */) fail(status, in, call);
   }
   void fail(int status, const Instance& in, const std::string& call) const;   // unless a warning: throws
+  void start(const MultiModel& mm, const CoSimConfig& config);   // instantiate, parameters, initialise
+  void release();                                               // terminate and free every instance
   void set_inputs(std::size_t target);
   void push_inputs(Instance& dst, bool only_changed);
   void fetch_outputs(Instance& in);
