@@ -60,6 +60,16 @@ MissionDecl decl_from_json(const Json& j) {
   MissionDecl d;
   Json rest = j;
   rest.erase("events");
+  if (rest.contains("robots") && rest["robots"].is_array())
+    for (std::size_t i = 0; i < rest["robots"].size(); ++i) {
+      Json& robot = rest["robots"][i];
+      double radius = 0.0;
+      if (robot.contains("radius")) {
+        json_io::from_json(robot["radius"], json_io::join_index("robots", i) + ".radius", radius);
+        robot.erase("radius");
+      }
+      d.radii.push_back(radius);
+    }
   json_io::from_json(rest, "", d);
   const Json& ev = j["events"];
   if (!ev.is_object())

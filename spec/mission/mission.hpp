@@ -34,8 +34,7 @@ using Point = std::array<double, 2>;  // [x, y] in metres
 // ---- the file as written ---------------------------------------------------------------------
 
 struct RobotDecl {
-  BOOST_HANA_DEFINE_STRUCT(RobotDecl, (std::string, name), (Point, start),
-                           (std::optional<double>, radius));  // metres, default 0
+  BOOST_HANA_DEFINE_STRUCT(RobotDecl, (std::string, name), (Point, start));
 };
 struct TaskDecl {
   BOOST_HANA_DEFINE_STRUCT(TaskDecl, (std::string, name), (Point, at));
@@ -67,6 +66,8 @@ struct MissionDecl {
       (std::vector<RegionDecl>, regions),
       (std::optional<WorldDecl>, world));
   std::map<std::string, MeaningDecl> events;  // "events" is an object keyed by event name
+  // robots[i].radius, metres (read apart, so that RobotDecl keeps its two fields); 0 when absent.
+  std::vector<double> radii;
 };
 
 // Reads the JSON text; `file` names it in messages ("file:line:col" for syntax errors).

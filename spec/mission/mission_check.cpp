@@ -155,7 +155,7 @@ Mission check_mission(const MissionDecl& d, const supervisor::Automaton& fsm,
     check_unique(d.tasks, "tasks");
     check_unique(d.regions, "regions");
     for (std::size_t i = 0; i < d.robots.size(); ++i) {
-      const double radius = d.robots[i].radius.value_or(0.0);
+      const double radius = i < d.radii.size() ? d.radii[i] : 0.0;
       if (!std::isfinite(radius) || radius < 0.0 || radius > 1e6)
         throw InputError(fmt::format("robots[{}].radius", i),
                          fmt::format("expected a radius in metres, >= 0 and at most 1e6; got {}",
