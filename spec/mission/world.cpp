@@ -277,6 +277,8 @@ void check_world(const Mission& m) {
                                      "its start {}: {}",
                                      m.tasks[t].name, point_text(m.tasks[t].at), robot.name,
                                      robot.radius, point_text(robot.start), why));
+    }
+    for (const std::size_t t : tasks[r]) {
       for (const std::size_t u : tasks[r])
         if (u != t && !route_to_point(w, trav, m.tasks[u].at, m.tasks[t].at))
           throw InputError(fmt::format("tasks[{}].at", t),

@@ -59,7 +59,7 @@ TEST(MissionWorld, OverlapIsTheDiskAgainstOccupiedSquaresAndTheGridsBorder) {
   EXPECT_TRUE(sm::overlaps_obstacle(w, {1.5, 2.5}, 0.0));
   EXPECT_FALSE(sm::overlaps_obstacle(w, {1.0, 2.5}, 0.0));   // on its edge: touching only
   EXPECT_TRUE(sm::overlaps_obstacle(w, {0.95, 2.5}, 0.1));
-  EXPECT_FALSE(sm::overlaps_obstacle(w, {0.9, 2.5}, 0.1));
+  EXPECT_FALSE(sm::overlaps_obstacle(w, {0.85, 2.5}, 0.1));
   EXPECT_TRUE(sm::overlaps_obstacle(w, {0.9, 1.9}, 0.2));    // near its corner
   EXPECT_FALSE(sm::overlaps_obstacle(w, {0.5, 0.5}, 0.5));   // touches the border
   EXPECT_TRUE(sm::overlaps_obstacle(w, {0.5, 0.5}, 0.6));
@@ -67,9 +67,10 @@ TEST(MissionWorld, OverlapIsTheDiskAgainstOccupiedSquaresAndTheGridsBorder) {
 }
 
 TEST(MissionWorld, RouteGoesAroundAWallKeepsClearAndIsDeterministic) {
-  const auto w = grid(0.5, {0, 0}, {"..........", "..........", "....#.....", "....#.....",
+  // 5 m x 6 m; a wall from the bottom border up to 2 m below the top one.
+  const auto w = grid(0.5, {0, 0}, {"..........", "..........", "..........", "..........",
                                     "....#.....", "....#.....", "....#.....", "....#.....",
-                                    "....#.....", ".........."});
+                                    "....#.....", "....#.....", "....#.....", "....#....."});
   const auto trav = sm::traversable_cells(w, 0.2);
   const sm::Point from{1.0, 1.5}, to{4.0, 1.5};
   const auto r = sm::route_to_point(w, trav, from, to);
@@ -79,20 +80,26 @@ TEST(MissionWorld, RouteGoesAroundAWallKeepsClearAndIsDeterministic) {
   EXPECT_FALSE(route_touches(w, from, *r, 0.2));
   const auto again = sm::route_to_point(w, trav, from, to);
   EXPECT_EQ(again->waypoints, r->waypoints);
-  // A radius too large for the 1 m gap above the wall (the border is a wall too): no route.
-  EXPECT_FALSE(sm::route_to_point(w, sm::traversable_cells(w, 0.3), from, to).has_value());
+  // A radius too large for the 2 m gap above the wall (the border is a wall too): no route.
+  EXPECT_FALSE(sm::route_to_point(w, sm::traversable_cells(w, 0.6), from, to).has_value());
 }
 
-// Random grids, radii and traversable end cells: a route, when there is one, never brings the
-// robot's disk onto a wall, and is no shorter than the straight line.
+// Random grids of up to four walls (rectangles of cells), radii and traversable end cells: a
+// route, when there is one, never brings the robot's disk onto a wall, and is no shorter than
+// the straight line.
 RC_GTEST_PROP(MissionWorld, RoutesNeverOverlapObstaclesOnRandomGrids, ()) {
-  const auto rows = *rc::gen::inRange<std::size_t>(3, 13);
-  const auto cols = *rc::gen::inRange<std::size_t>(3, 13);
+  const auto rows = *rc::gen::inRange<std::size_t>(6, 21);
+  const auto cols = *rc::gen::inRange<std::size_t>(6, 21);
   const double res = *rc::gen::element(0.25, 0.5, 1.0);
   const double radius = *rc::gen::element(0.0, 0.1, 0.3);
   std::vector<std::string> text(rows, std::string(cols, '.'));
-  for (auto& row : text)
-    for (auto& c : row) c = *rc::gen::inRange(0, 4) == 0 ? '#' : '.';
+  for (int k = *rc::gen::inRange(0, 5); k > 0; --k) {
+    const auto i = *rc::gen::inRange<std::size_t>(0, rows), j = *rc::gen::inRange<std::size_t>(0, cols);
+    const auto h = *rc::gen::inRange<std::size_t>(1, rows / 2 + 1);
+    const auto wd = *rc::gen::inRange<std::size_t>(1, cols / 2 + 1);
+    for (std::size_t a = i; a < std::min(rows, i + h); ++a)
+      for (std::size_t b = j; b < std::min(cols, j + wd); ++b) text[a][b] = '#';
+  }
   const auto w = grid(res, {-1.0, 2.0}, text);
   const auto trav = sm::traversable_cells(w, radius);
   std::vector<std::size_t> free;
@@ -135,19 +142,22 @@ std::string message_for(const std::function<void(Json&)>& edit) {
 
 TEST(MissionWorld, BadWorldsGetOneMessageAtTheirJsonPath) {
   EXPECT_EQ(message_for([](Json&) {}), "");
-  EXPECT_EQ(message_for([](Json& j) { j["robots"][0]["start"] = {-3.75, 0}; }),
-            "robots[0].start: robot A (radius 0.2 m) at [-3.75, 0] overlaps an obstacle of the "
+  EXPECT_EQ(message_for([](Json& j) { j["robots"][0]["start"] = {-6.25, 0.25}; }),
+            "robots[0].start: robot A (radius 0.2 m) at [-6.25, 0.25] overlaps an obstacle of the "
             "world or leaves its grid");
-  EXPECT_EQ(message_for([](Json& j) { j["tasks"][1]["at"] = {-3.75, 0}; }),
-            "tasks[1].at: an obstacle of the world covers task t2 at [-3.75, 0] for robot A "
+  EXPECT_EQ(message_for([](Json& j) { j["robots"][2]["start"] = {8.1, 4}; }),
+            "robots[2].start: robot C (radius 0 m) at [8.1, 4] overlaps an obstacle of the world or "
+            "leaves its grid");
+  EXPECT_EQ(message_for([](Json& j) { j["tasks"][1]["at"] = {-6.25, 0.25}; }),
+            "tasks[1].at: an obstacle of the world covers task t2 at [-6.25, 0.25] for robot A "
             "(radius 0.2 m), or the task is outside the grid");
   EXPECT_EQ(message_for([](Json& j) {
               for (auto& row : j["world"]["rows"]) row = row.get<std::string>().replace(8, 1, "#");
             }),
-            "tasks[0].at: task t1 at [0, 1.5] is unreachable for robot B (radius 0.25 m) from "
-            "its start [-6.5, -4]: no path of cells clear of the walls by its radius plus half a "
+            "tasks[1].at: task t2 at [-6.5, -3] is unreachable for robot A (radius 0.2 m) from "
+            "its start [0, 5]: no path of cells clear of the walls by its radius plus half a "
             "cell leads there");
-  EXPECT_EQ(message_for([](Json& j) { j["regions"][0]["corners"] = {{-3.9, -1}, {-3.6, 1}}; }),
+  EXPECT_EQ(message_for([](Json& j) { j["regions"][0]["corners"] = {{-7.9, 0.1}, {-4.6, 0.4}}; }),
             "regions[0]: region regt1 is unreachable for robot A (radius 0.2 m) from its start "
             "[0, 5]: no cell of the region is clear of the walls by its radius plus half a cell "
             "and connected to the start");
@@ -172,7 +182,7 @@ TEST(MissionWorld, PlanCostsRoutesAroundTheWalls) {
   const auto tasks = sm::task_sequences(m, p.events);
   double straight_makespan = 0.0;
   for (std::size_t r = 0; r < m.robots.size(); ++r) {
-    ASSERT_EQ(tasks[r].size(), 1u) << m.robots[r].name;
+    ASSERT_EQ(tasks[r], std::vector<std::size_t>{r}) << m.robots[r].name;  // A t1, B t2, C t3
     const sm::Point to = m.tasks[tasks[r][0]].at;
     const auto route = sm::route_to_point(*m.world, m.world->traversable[r], m.robots[r].start, to);
     ASSERT_TRUE(route.has_value());
