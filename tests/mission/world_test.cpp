@@ -14,8 +14,10 @@
 #include <sstream>
 
 #include "conformance/mission/differential.hpp"
+#include "conformance/mission/generate.hpp"
 #include "impl/mission/trace.hpp"
 #include "spec/mission/world.hpp"
+#include "spec/util/hana_json.hpp"
 #include "spec/util/input_error.hpp"
 #include "swarmcheck/mission.hpp"
 #include "tests/mission/replay.hpp"
@@ -24,6 +26,7 @@ namespace {
 
 namespace sm = swarmcheck::mission;
 namespace im = swarmcheck::impl::mission;
+namespace cm = swarmcheck::conformance::mission;
 namespace fs = std::filesystem;
 using Json = nlohmann::ordered_json;
 const std::string kWalls = SWARMCHECK_SCENARIOS "/examples/walls.json";
@@ -226,6 +229,54 @@ TEST(MissionWorld, WalledMissionCompletesWithoutCollisionAndModelAgreesKinematic
 
 TEST(MissionWorld, WalledMissionCompletesWithoutCollisionAndModelAgreesUnicycle) {
   walls_run(sm::BodyModel::unicycle);
+}
+
+// The differential in a world: run_case's missions (integer points, either body) in a grid of
+// 0.5 m cells 3 m around them with up to three walls (bars of cells) and radii of 0..0.2 m; the
+// cases the world's checks reject are discarded. The library and the model agree record for
+// record (an overlap would throw in both, and fail the property).
+RC_GTEST_PROP(MissionWorld, ImplRunEqualsModelRunOnGeneratedWalledMissions, ()) {
+  cm::RunCase c = *cm::run_case();
+  sm::Mission& m = c.mission;
+  double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300;
+  const auto add = [&](const sm::Point& p) {
+    x0 = std::min(x0, p[0]), y0 = std::min(y0, p[1]), x1 = std::max(x1, p[0]), y1 = std::max(y1, p[1]);
+  };
+  for (const auto& r : m.robots) add(r.start);
+  for (const auto& t : m.tasks) add(t.at);
+  for (const auto& g : m.regions) add(g.lo), add(g.hi);
+  const double res = 0.5;
+  const auto cols = static_cast<std::size_t>((x1 - x0 + 6) / res);
+  const auto rows = static_cast<std::size_t>((y1 - y0 + 6) / res);
+  std::vector<std::string> text(rows, std::string(cols, '.'));
+  for (int k = *rc::gen::inRange(0, 4); k > 0; --k) {
+    const bool across = *rc::gen::arbitrary<bool>();
+    const auto i = *rc::gen::inRange<std::size_t>(0, rows), j = *rc::gen::inRange<std::size_t>(0, cols);
+    const auto len = *rc::gen::inRange<std::size_t>(2, (across ? cols : rows) / 2 + 3);
+    for (std::size_t n = 0; n < len; ++n)
+      if (across && j + n < cols) text[i][j + n] = '#';
+      else if (!across && i + n < rows) text[i + n][j] = '#';
+  }
+  m.world = grid(res, {x0 - 3, y0 - 3}, text);
+  for (auto& r : m.robots) {
+    r.radius = *rc::gen::element(0.0, 0.1, 0.2);
+    m.world->traversable.push_back(sm::traversable_cells(*m.world, r.radius));
+  }
+  try {
+    sm::check_world(m);
+  } catch (const swarmcheck::InputError&) {
+    RC_DISCARD("the world's checks reject it");
+  }
+  bool detour = false;  // some robot's route to some task is 10 % longer than the straight line
+  for (std::size_t r = 0; r < m.robots.size(); ++r)
+    for (const auto& t : m.tasks)
+      detour = detour || sm::travel_cost(m, r, m.robots[r].start, t.at) >
+                             1.1 * sm::distance(m.robots[r].start, t.at);
+  RC_CLASSIFY(detour, "a wall makes a detour");
+  RC_TAG(swarmcheck::json_io::enum_to_string(c.options.body),
+         sm::run_mission(m, c.options).reason.substr(0, 8));
+  const auto d = cm::diff_run(m, c.options);
+  RC_ASSERT(d.value_or("") == std::string());
 }
 
 }  // namespace
