@@ -166,8 +166,19 @@ Mission check_mission(const MissionDecl& d, const supervisor::Automaton& fsm,
     for (std::size_t i = 0; i < d.regions.size(); ++i) m.regions.push_back(check_region(d.regions[i], i));
     if (d.world) {
       m.world = build_world(*d.world);
-      for (const auto& r : m.robots)
-        m.world->traversable.push_back(traversable_cells(*m.world, r.radius));
+      for (std::size_t i = 0; i < m.robots.size(); ++i) {
+        const double radius = m.robots[i].radius;
+        if (traversable_checks(*m.world, radius) > kMaxTraversableChecks)
+          throw InputError(fmt::format("robots[{}].radius", i),
+                           fmt::format("a radius of {} m in a world of {} x {} cells of {} m needs "
+                                       "{} neighbour checks to find its free cells; at most {} "
+                                       "(use larger cells or a smaller world)",
+                                       radius, m.world->rows, m.world->cols,
+                                       m.world->resolution_m,
+                                       traversable_checks(*m.world, radius),
+                                       kMaxTraversableChecks));
+        m.world->traversable.push_back(traversable_cells(*m.world, radius));
+      }
     }
     check_state(fsm, d.initial_state, "initial_state", d.fsm);
     m.initial_state = d.initial_state;

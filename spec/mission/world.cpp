@@ -150,6 +150,11 @@ bool overlaps_obstacle(const GridWorld& w, const Point& p, double radius_m) {
   return false;
 }
 
+double traversable_checks(const GridWorld& w, double radius_m) {
+  const double reach = std::ceil((radius_m + w.resolution_m / 2) / w.resolution_m) + 1;
+  return static_cast<double>(w.rows * w.cols) * (2 * reach + 1) * (2 * reach + 1);
+}
+
 std::vector<char> traversable_cells(const GridWorld& w, double radius_m) {
   const double res = w.resolution_m;
   const double need = radius_m + res / 2;  // clearance of the cell's square

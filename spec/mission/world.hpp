@@ -61,8 +61,12 @@ std::optional<Route> route_to_region(const GridWorld& w, const std::vector<char>
 // check_mission rejects missions where a robot could need one).
 double travel_cost(const Mission& m, std::size_t robot, const Point& from, const Point& to);
 
-// Cells of a world at most (4 M: a 2 km square at 1 m).
-inline constexpr std::size_t kMaxWorldCells = std::size_t{1} << 22;
+// Cells of a world at most (1 M: a 1 km square at 1 m), and neighbour checks traversable_cells
+// may make for one robot (cells x (2 reach + 1)^2, reach = ceil((radius + res/2) / res) + 1):
+// check_mission refuses a radius over the budget instead of computing for minutes.
+inline constexpr std::size_t kMaxWorldCells = std::size_t{1} << 20;
+inline constexpr double kMaxTraversableChecks = 268435456.0;  // 2^28
+double traversable_checks(const GridWorld& w, double radius_m);
 
 // The grid of the file (resolution, row lengths and characters checked; InputError at world.*);
 // traversable is left empty (check_mission fills it per robot).

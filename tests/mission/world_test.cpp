@@ -171,6 +171,10 @@ TEST(MissionWorld, BadWorldsGetOneMessageAtTheirJsonPath) {
             "world.resolution_m: expected a cell side in metres, > 0 and at most 1e6; got 0");
   EXPECT_EQ(message_for([](Json& j) { j["robots"][1]["radius"] = -1; }),
             "robots[1].radius: expected a radius in metres, >= 0 and at most 1e6; got -1");
+  EXPECT_EQ(message_for([](Json& j) { j["robots"][1]["radius"] = 1000; }),
+            "robots[1].radius: a radius of 1000 m in a world of 24 x 32 cells of 0.5 m needs "
+            "12318739200 neighbour checks to find its free cells; at most 268435456 (use larger "
+            "cells or a smaller world)");
   EXPECT_EQ(message_for([](Json& j) { j["world"].erase("rows"); }),
             "world.rows: missing (the grid's rows, top first: '#' occupied, '.' free)");
   EXPECT_EQ(message_for([](Json& j) { j["world"]["walls"] = 1; }).substr(0, 12), "world.walls:");
