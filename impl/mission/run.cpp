@@ -267,15 +267,15 @@ class Runner {
       r.theta = p.theta;
       r.ctrl = p.ctrl;
       r.driving = p.driving;
-      if (p.arrived) {
+      if (p.arrived && !r.route.empty()) {  // on to the route's next waypoint
+        r.leg = r.route.front();
+        r.route.pop_front();
+        r.following = true;
         r.driving = false;
-        r.following = !r.route.empty();
-        if (r.following) {  // on to the route's next waypoint
-          r.leg = r.route.front();
-          r.route.pop_front();
-        } else if (r.leg_is_task) {
-          r.queue.pop_front();
-        }
+      } else if (p.arrived) {
+        if (r.leg_is_task) r.queue.pop_front();
+        r.driving = false;
+        r.following = false;
       }
       for (const auto& e : entries) fire(e, t);
     }
