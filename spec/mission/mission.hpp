@@ -123,13 +123,15 @@ struct Mission {
 };
 
 // Resolves and checks `d` against `fsm` (read from the file d.fsm names). Checks, in order:
-// at least one robot; names unique within robots, tasks and regions; every region has two
-// corners with different x and different y; initial and marked states exist; every meaning names
-// one robot and exactly one of a task or a region, all existing; every FSM event has a meaning
-// (meanings of events the FSM lacks are kept aside in unused_events); task starts are controllable and region entries
-// uncontrollable in the FSM; the region entries of the robots' start positions (fired at time 0,
-// robot by robot, regions in file order) are enabled in turn from the initial state; some marked
-// state is reachable from the initial state.
+// at least one robot; names unique within robots, tasks and regions; radii >= 0; every region
+// has two corners with different x and different y; the world's grid and its size for each
+// radius (spec/mission/world.hpp); initial and marked states exist; every meaning names one
+// robot and exactly one of a task or a region, all existing; every FSM event has a meaning
+// (meanings of events the FSM lacks are kept aside in unused_events); task starts are
+// controllable and region entries uncontrollable in the FSM; the world's checks (check_world:
+// starts and tasks clear of walls, tasks and regions reachable); the region entries of the
+// robots' start positions (fired at time 0, robot by robot, regions in file order) are enabled
+// in turn from the initial state; some marked state is reachable from the initial state.
 Mission check_mission(const MissionDecl& d, const supervisor::Automaton& fsm,
                       const std::string& file);
 
