@@ -4,23 +4,11 @@
 #include <cmath>
 #include <fmt/format.h>
 
+#include "spec/util/xml_text.hpp"
+
 namespace swarmcheck::views {
 
-std::string xml_escape(std::string_view s) {
-  std::string out;
-  out.reserve(s.size());
-  for (const char c : s) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      case '\'': out += "&#39;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
+std::string xml_escape(std::string_view s) { return text::xml_escape(s); }
 
 std::string num(double v) {
   if (!std::isfinite(v)) return "0";

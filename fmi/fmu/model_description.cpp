@@ -4,22 +4,12 @@
 
 #include <memory>
 
+#include "spec/util/xml_text.hpp"
+
 namespace swarmcheck::fmi {
 namespace {
 
-std::string xml_escape(const std::string& s) {
-  std::string out;
-  for (const char c : s) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
+using text::xml_escape;
 
 const char* description_of(Kind k) {
   switch (k) {
