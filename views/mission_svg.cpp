@@ -24,6 +24,33 @@ struct Box {
 
 constexpr double kMissionPlotPx = 560.0, kMissionMargin = 20.0, kMissionTop = 56.0;
 
+// A world's walls: the grid's border, and each row's runs of occupied cells as one rectangle.
+template <class FX, class FY>
+std::string walls_svg(const swarmcheck::mission::GridWorld& w, const FX& X, const FY& Y,
+                      double scale) {
+  const double res = w.resolution_m;
+  std::string out = fmt::format(
+      "<g class=\"walls\" fill=\"#57534e\">\n<rect class=\"border\" x=\"{}\" y=\"{}\" width=\"{}\" "
+      "height=\"{}\" fill=\"none\" stroke=\"#57534e\" stroke-width=\"3\"/>\n",
+      num(X(w.origin[0])), num(Y(w.origin[1] + static_cast<double>(w.rows) * res)),
+      num(static_cast<double>(w.cols) * res * scale), num(static_cast<double>(w.rows) * res * scale));
+  for (std::size_t i = 0; i < w.rows; ++i)
+    for (std::size_t j = 0; j < w.cols;) {
+      if (!w.occupied[i * w.cols + j]) {
+        ++j;
+        continue;
+      }
+      std::size_t end = j;
+      while (end < w.cols && w.occupied[i * w.cols + end]) ++end;
+      const double x = w.origin[0] + static_cast<double>(j) * res;
+      const double top = w.origin[1] + static_cast<double>(w.rows - i) * res;
+      out += fmt::format("<rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\"/>\n", num(X(x)), num(Y(top)),
+                         num(static_cast<double>(end - j) * res * scale), num(res * scale));
+      j = end;
+    }
+  return out + "</g>\n";
+}
+
 }  // namespace
 
 MissionPathRecorder::MissionPathRecorder(std::size_t robots, swarmcheck::mission::RunObserver* next)
@@ -56,6 +83,12 @@ std::string mission_svg(const MissionPicture& p) {
   for (const auto& t : m.tasks) b.add(t.at);
   for (const auto& r : m.robots) b.add(r.start);
   for (const auto& path : p.paths) for (const auto& q : path) b.add(q);
+  const auto* world = m.world ? &*m.world : nullptr;
+  if (world) {  // the whole grid is shown
+    b.add(world->origin);
+    b.add({world->origin[0] + static_cast<double>(world->cols) * world->resolution_m,
+           world->origin[1] + static_cast<double>(world->rows) * world->resolution_m});
+  }
   const double span = std::max({b.x1 - b.x0, b.y1 - b.y0, 1e-9});
   const double pad = 0.05 * span;
   const double scale = kMissionPlotPx / (span + 2 * pad);
@@ -69,6 +102,7 @@ std::string mission_svg(const MissionPicture& p) {
   out += fmt::format("<text x=\"{}\" y=\"22\" font-size=\"15\" font-weight=\"bold\">{}</text>\n", num(kMissionMargin), xml_escape(p.title));
   out += fmt::format("<text x=\"{}\" y=\"42\" font-size=\"12\" fill=\"#444\">{}</text>\n", num(kMissionMargin), xml_escape(p.subtitle));
   out += fmt::format("<rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" fill=\"#fafafa\" stroke=\"#ccc\"/>\n", num(kMissionMargin), num(kMissionTop), num(w), num(h));
+  if (world) out += walls_svg(*world, X, Y, scale);
   out += "<g class=\"regions\" font-size=\"11\">\n";
   for (const auto& g : m.regions) {
     const double rw = (g.hi[0] - g.lo[0]) * scale, rh = (g.hi[1] - g.lo[1]) * scale;

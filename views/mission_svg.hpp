@@ -1,6 +1,7 @@
 #pragma once
 // The picture of a mission (mission run --svg): regions (named rectangles), tasks (named
-// diamonds), each robot's path from its start (hollow circle) to where it ended (filled).
+// diamonds), each robot's path from its start (hollow circle) to where it ended (filled), and a
+// world's walls (its grid's border and occupied cells, dark grey) when the mission has one.
 #include <string>
 #include <vector>
 

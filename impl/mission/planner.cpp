@@ -2,6 +2,7 @@
 #include "impl/mission/planner.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cstring>
 #include <memory>
 #include <queue>
@@ -10,6 +11,7 @@
 
 #include "impl/supervisor/reach.hpp"
 #include "spec/mission/run.hpp"
+#include "spec/mission/world.hpp"
 #include "swarmcheck/mission.hpp"
 #include "spec/util/input_error.hpp"
 
@@ -124,10 +126,22 @@ Planner::Planner(const sm::Mission& m) : mission_(&m), fsm_(supervisor::compile(
     }
   }
   const std::size_t t = m.tasks.size();
-  task_distance_.resize(t * t);
-  for (std::size_t a = 0; a < t; ++a)
-    for (std::size_t b = 0; b < t; ++b)
-      task_distance_[a * t + b] = sm::distance(m.tasks[a].at, m.tasks[b].at);
+  task_distance_.resize(m.robots.size() * t * t);
+  for (std::size_t r = 0; r < m.robots.size(); ++r)
+    for (std::size_t a = 0; a < t; ++a)
+      for (std::size_t b = 0; b < t; ++b)
+        task_distance_[(r * t + a) * t + b] = sm::travel_cost(m, r, m.tasks[a].at, m.tasks[b].at);
+}
+
+double Planner::cost_from(std::size_t r, const sm::Point& p, std::size_t t) {
+  const sm::Mission& m = *mission_;
+  if (!m.world) return sm::distance(p, m.tasks[t].at);
+  const auto key = std::make_tuple(r, std::bit_cast<std::uint64_t>(p[0]),
+                                   std::bit_cast<std::uint64_t>(p[1]), t);
+  if (const auto it = route_memo_.find(key); it != route_memo_.end()) return it->second;
+  const double c = sm::travel_cost(m, r, p, m.tasks[t].at);
+  route_memo_.emplace(key, c);
+  return c;
 }
 
 Plan Planner::plan(const PlanQuery& q) {
@@ -162,7 +176,7 @@ Plan Planner::search(const PlanQuery& q) {
   std::vector<double> from_here(robots * tasks);
   for (std::size_t r = 0; r < robots; ++r)
     for (std::size_t t = 0; t < tasks; ++t)
-      from_here[r * tasks + t] = sm::distance(q.positions[r], m.tasks[t].at);
+      from_here[r * tasks + t] = cost_from(r, q.positions[r], t);
 
   Labels labels(robots);
   const StateId start = state_id_.at(q.from);
@@ -194,7 +208,7 @@ Plan Planner::search(const PlanQuery& q) {
       if (event_robot_[ev] >= 0) {  // a task start: that robot travels to the task
         const auto r = static_cast<std::size_t>(event_robot_[ev]);
         const auto t = static_cast<std::uint16_t>(event_task_[ev]);
-        tv[r] += ps[r] == here ? from_here[r * tasks + t] : task_distance_[ps[r] * tasks + t];
+        tv[r] += ps[r] == here ? from_here[r * tasks + t] : task_distance_[(r * tasks + ps[r]) * tasks + t];
         ps[r] = t;
       }
       double makespan = 0.0, total = 0.0;  // as spec cost_of does, without its copy

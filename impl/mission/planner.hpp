@@ -18,6 +18,7 @@
 // all at once when full: spec/mission/run.hpp). The public swarmcheck::mission::Planner wraps this class.
 #include <cstdint>
 #include <map>
+#include <tuple>
 #include <string>
 #include <vector>
 
@@ -41,6 +42,8 @@ class Planner {
 
  private:
   Plan search(const PlanQuery& q);
+  // travel_cost of robot r from p to task t; remembered in a world (an A* search each).
+  double cost_from(std::size_t r, const swarmcheck::mission::Point& p, std::size_t t);
 
   const swarmcheck::mission::Mission* mission_;
   supervisor::Fsm fsm_;
@@ -49,7 +52,8 @@ class Planner {
   std::vector<std::uint8_t> coaccessible_;
   std::vector<std::int32_t> event_robot_;  // [event] robot of a task start, -1 otherwise
   std::vector<std::int32_t> event_task_;   // [event] task of a task start, -1 otherwise
-  std::vector<double> task_distance_;      // [t1 * tasks + t2]
+  std::vector<double> task_distance_;      // [(robot * tasks + t1) * tasks + t2], travel_cost
+  std::map<std::tuple<std::size_t, std::uint64_t, std::uint64_t, std::size_t>, double> route_memo_;
   std::map<std::string, Plan> cache_;
   std::size_t cache_hits_ = 0;
   std::size_t labels_last_ = 0;

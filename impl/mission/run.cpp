@@ -15,6 +15,7 @@
 #include "spec/mission/avoidance.hpp"
 #include "spec/mission/plan.hpp"
 #include "spec/mission/run.hpp"
+#include "spec/mission/world.hpp"
 #include "swarmcheck/mission.hpp"
 
 namespace swarmcheck::impl::mission {
@@ -37,7 +38,9 @@ struct RobotSim {
   std::deque<std::size_t> queue;        // tasks to drive to, front first
   bool driving = false;                 // on a leg (the controller accepted its waypoint)
   sm::Point leg{};                      // the leg's waypoint: the front task, or a detour point
-  bool leg_is_task = false;
+  bool leg_is_task = false;             // the leg's goal is the front task
+  std::deque<sm::Point> route;          // in a world: the leg's waypoints after this one
+  bool following = false;               // driving to a later waypoint of the route
   std::optional<std::size_t> last_task; // the task it was sent to last
   double planned = 0.0;                 // the cost model's travel of the tasks it was sent to
   double travelled = 0.0;
@@ -212,7 +215,7 @@ class Runner {
       plan_->insert(plan_->begin(), e);
       const sm::Meaning& mn = m_.events.at(e);
       RobotSim& r = robots_[mn.robot];
-      r.planned += sm::distance(plan_point(mn.robot), m_.tasks[mn.target].at);
+      r.planned += sm::travel_cost(m_, mn.robot, plan_point(mn.robot), m_.tasks[mn.target].at);
       r.queue.push_back(mn.target);
       r.last_task = mn.target;
       fire(e, t);
@@ -246,8 +249,11 @@ class Runner {
       RobotSim& r = robots_[i];
       r.blocked = false;
       if (r.queue.empty()) continue;
-      if (!r.driving) start_leg(i);
+      if (!r.driving && !r.following) start_leg(i);
       const Proposal p = propose(o_, rp_, r);
+      if (m_.world && sm::overlaps_obstacle(*m_.world, p.pos, m_.robots[i].radius))
+        throw std::logic_error(fmt::format("robot {} would overlap an obstacle at [{}, {}] at t = {} s",
+                                           m_.robots[i].name, p.pos[0], p.pos[1], t));
       const auto entries = sm::entry_events(m_, i, r.pos, p.pos);
       if (!sm::fire_all(m_, state_, entries)) {
         r.blocked = true;
@@ -261,9 +267,15 @@ class Runner {
       r.theta = p.theta;
       r.ctrl = p.ctrl;
       r.driving = p.driving;
-      if (p.arrived) {
+      if (p.arrived && !r.route.empty()) {  // on to the route's next waypoint
+        r.leg = r.route.front();
+        r.route.pop_front();
+        r.following = true;
+        r.driving = false;
+      } else if (p.arrived) {
         if (r.leg_is_task) r.queue.pop_front();
         r.driving = false;
+        r.following = false;
       }
       for (const auto& e : entries) fire(e, t);
     }
@@ -286,22 +298,38 @@ class Runner {
         settled_ = false;
       }
     }
-    if (!plan_) return;
+    const sm::Region* region = plan_ ? detour(i, task) : nullptr;
+    if (region) {
+      for (std::size_t k = 0; k < 2; ++k) {
+        const double margin = std::min(0.5, (region->hi[k] - region->lo[k]) / 4);
+        r.leg[k] = std::clamp(r.pos[k], region->lo[k] + margin, region->hi[k] - margin);
+      }
+      r.leg_is_task = false;
+    }
+    r.route.clear();
+    if (!m_.world) return;
+    // In a world the leg follows the A* route (a region's goal is the route's end); no route:
+    // straight to the goal.
+    const auto& trav = m_.world->traversable[i];
+    const auto route = region ? sm::route_to_region(*m_.world, trav, r.pos, *region)
+                              : sm::route_to_point(*m_.world, trav, r.pos, r.leg);
+    if (!route) return;
+    r.leg = route->waypoints.front();
+    r.route.assign(route->waypoints.begin() + 1, route->waypoints.end());
+  }
+
+  // The region robot i must enter first by the plan, if it holds neither the task nor the robot.
+  const sm::Region* detour(std::size_t i, const sm::Point& task) const {
+    const RobotSim& r = robots_[i];
     for (const auto& e : *plan_) {
       const sm::Meaning& mn = m_.events.at(e);
       if (mn.robot != i) continue;
-      if (mn.kind != sm::MeaningKind::region_entry) break;
+      if (mn.kind != sm::MeaningKind::region_entry) return nullptr;
       const sm::Region& g = m_.regions[mn.target];
-      if (sm::inside(g, task) || sm::inside(g, r.pos)) break;
-      sm::Point detour{};
-      for (std::size_t k = 0; k < 2; ++k) {
-        const double margin = std::min(0.5, (g.hi[k] - g.lo[k]) / 4);
-        detour[k] = std::clamp(r.pos[k], g.lo[k] + margin, g.hi[k] - margin);
-      }
-      r.leg = detour;
-      r.leg_is_task = false;
-      break;
+      if (sm::inside(g, task) || sm::inside(g, r.pos)) return nullptr;
+      return &g;
     }
+    return nullptr;
   }
 
   std::string deadlock_reason() const {

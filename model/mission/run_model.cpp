@@ -14,6 +14,7 @@
 #include "spec/exploration/body.hpp"
 #include "spec/exploration/controller.hpp"
 #include "spec/mission/avoidance.hpp"
+#include "spec/mission/world.hpp"
 #include "spec/util/demand.hpp"
 
 namespace swarmcheck::model::mission {
@@ -30,7 +31,9 @@ struct Robot {
   std::vector<std::size_t> tasks;   // queued, front first
   bool on_leg = false;
   sm::Point waypoint{};
-  bool waypoint_is_task = false;
+  bool waypoint_is_task = false;    // the leg's goal is the front task (else a region's point)
+  std::vector<sm::Point> route;     // in a world: the leg's waypoints after this one
+  bool following = false;           // driving to a later waypoint of the leg's route
   bool sent = false;                // sent to a task at least once
   std::size_t sent_to = 0;          // the task it was sent to last
   double planned_m = 0.0;           // the cost model's travel of the tasks it was sent to
@@ -190,7 +193,8 @@ bool choose(World& w, double t) {
     w.current->insert(w.current->begin(), e);
     const sm::Meaning& start = w.m.events.at(e);
     Robot& r = w.robots[start.robot];
-    r.planned_m += sm::distance(plan_position(w, start.robot), w.m.tasks[start.target].at);
+    r.planned_m +=
+        sm::travel_cost(w.m, start.robot, plan_position(w, start.robot), w.m.tasks[start.target].at);
     r.tasks.push_back(start.target);
     r.sent = true;
     r.sent_to = start.target;
@@ -214,6 +218,20 @@ const sm::Region* detour_region(const World& w, const std::vector<std::string>& 
   return nullptr;
 }
 
+// In a world, the leg follows the A* route to its goal (spec/mission/world.hpp); a region's goal
+// is then the route's end, not the nearest point. No route: straight to the goal.
+void route_leg(World& w, std::size_t i, const sm::Region* g) {
+  Robot& r = w.robots[i];
+  r.route.clear();
+  if (!w.m.world) return;
+  const auto& trav = w.m.world->traversable[i];
+  const auto route = g ? sm::route_to_region(*w.m.world, trav, r.pos, *g)
+                       : sm::route_to_point(*w.m.world, trav, r.pos, r.waypoint);
+  if (!route) return;
+  r.waypoint = route->waypoints.front();
+  r.route.assign(route->waypoints.begin() + 1, route->waypoints.end());
+}
+
 void start_leg(World& w, std::size_t i) {
   Robot& r = w.robots[i];
   r.waypoint = w.m.tasks[r.tasks.front()].at;
@@ -223,12 +241,14 @@ void start_leg(World& w, std::size_t i) {
     if (p.found) w.current = p.events;
   }
   const sm::Region* g = w.current ? detour_region(w, *w.current, i) : nullptr;
-  if (!g) return;
-  for (std::size_t k = 0; k < 2; ++k) {
-    const double margin = std::min(0.5, (g->hi[k] - g->lo[k]) / 4);
-    r.waypoint[k] = std::clamp(r.pos[k], g->lo[k] + margin, g->hi[k] - margin);
+  if (g) {
+    for (std::size_t k = 0; k < 2; ++k) {
+      const double margin = std::min(0.5, (g->hi[k] - g->lo[k]) / 4);
+      r.waypoint[k] = std::clamp(r.pos[k], g->lo[k] + margin, g->hi[k] - margin);
+    }
+    r.waypoint_is_task = false;
   }
-  r.waypoint_is_task = false;
+  route_leg(w, i, g);
 }
 
 Move propose(const World& w, const Robot& r) {
@@ -284,8 +304,11 @@ bool move_all(World& w, double t_from, double t) {
     Robot& r = w.robots[i];
     r.blocked = false;
     if (r.tasks.empty()) continue;
-    if (!r.on_leg) start_leg(w, i);
+    if (!r.on_leg && !r.following) start_leg(w, i);
     const Move mv = propose(w, r);
+    if (w.m.world && sm::overlaps_obstacle(*w.m.world, mv.pos, w.m.robots[i].radius))
+      throw std::logic_error(fmt::format("robot {} would overlap an obstacle at [{}, {}] at t = {} s",
+                                         w.m.robots[i].name, mv.pos[0], mv.pos[1], t));
     const std::vector<std::string> entries = sm::entry_events(w.m, i, r.pos, mv.pos);
     if (!sm::fire_all(w.m, w.q, entries)) {
       r.blocked = true;
@@ -300,8 +323,14 @@ bool move_all(World& w, double t_from, double t) {
     r.controller = mv.controller;
     r.on_leg = mv.on_leg;
     if (mv.arrived) {
-      if (r.waypoint_is_task) r.tasks.erase(r.tasks.begin());
       r.on_leg = false;
+      r.following = !r.route.empty();
+      if (r.following) {  // on to the route's next waypoint
+        r.waypoint = r.route.front();
+        r.route.erase(r.route.begin());
+      } else if (r.waypoint_is_task) {
+        r.tasks.erase(r.tasks.begin());
+      }
     }
     for (const auto& e : entries) fire(w, e, t);
   }

@@ -6,6 +6,8 @@
 #include <limits>
 #include <map>
 
+#include "spec/mission/world.hpp"
+
 namespace swarmcheck::model::mission {
 
 namespace {
@@ -56,7 +58,7 @@ Matrices calculate_costs(const sm::Mission& m, const sm::PlanQuery& q,
     return it == m.fsm.delta.end() ? nullptr : &it->second;
   };
   auto start_distance = [&](const EventInfo& e) {
-    return sm::distance(q.positions[e.bot], m.tasks[e.task].at);
+    return sm::travel_cost(m, e.bot, q.positions[e.bot], m.tasks[e.task].at);
   };
   std::vector<std::string> task_finished(x.n);
   for (std::size_t i = 0; i < x.n; ++i) {

@@ -52,9 +52,24 @@ MissionDecl decl_from_json(const Json& j) {
   require_each(j, "tasks", {{"name", "the task's name"}, {"at", "its position [x, y]"}});
   require_each(j, "regions", {{"name", "the region's name"},
                               {"corners", "two opposite corners [[x1, y1], [x2, y2]]"}});
+  if (j.contains("world"))
+    require_keys(j["world"], "world",
+                 {{"resolution_m", "the side of a grid cell in metres"},
+                  {"origin", "the grid's lower-left corner [x, y]"},
+                  {"rows", "the grid's rows, top first: '#' occupied, '.' free"}});
   MissionDecl d;
   Json rest = j;
   rest.erase("events");
+  if (rest.contains("robots") && rest["robots"].is_array())
+    for (std::size_t i = 0; i < rest["robots"].size(); ++i) {
+      Json& robot = rest["robots"][i];
+      double radius = 0.0;
+      if (robot.contains("radius")) {
+        json_io::from_json(robot["radius"], json_io::join_index("robots", i) + ".radius", radius);
+        robot.erase("radius");
+      }
+      d.radii.push_back(radius);
+    }
   json_io::from_json(rest, "", d);
   const Json& ev = j["events"];
   if (!ev.is_object())
@@ -71,6 +86,7 @@ MissionDecl decl_from_json(const Json& j) {
     require_finite(d.robots[i].start, json_io::join_index("robots", i) + ".start");
   for (std::size_t i = 0; i < d.tasks.size(); ++i)
     require_finite(d.tasks[i].at, json_io::join_index("tasks", i) + ".at");
+  if (d.world) require_finite(d.world->origin, "world.origin");
   for (std::size_t i = 0; i < d.regions.size(); ++i)
     for (std::size_t k = 0; k < 2; ++k)
       require_finite(d.regions[i].corners[k],

@@ -12,6 +12,9 @@
 //     "events":  {"a1s": {"robot": "A", "task": "tsk1"}, "a5e": {"robot": "A", "region": "reg5"}},
 //     "about": "free text" }
 //
+// Optional: "world" (an occupancy grid of walls) and a robot's "radius" (metres, default 0), both
+// in spec/mission/world.hpp. Without a world, a mission is an empty plane, as before.
+//
 // parse_mission_text only reads the JSON into a MissionDecl (types, unknown and missing keys);
 // check_mission resolves every name against the declarations and the FSM and checks the mission
 // before anything runs. Every problem is an InputError at "file: json.path".
@@ -39,6 +42,13 @@ struct TaskDecl {
 struct RegionDecl {
   BOOST_HANA_DEFINE_STRUCT(RegionDecl, (std::string, name), (std::array<Point, 2>, corners));
 };
+// The occupancy grid (spec/mission/world.hpp): '#' occupied, '.' free, first row on top.
+struct WorldDecl {
+  BOOST_HANA_DEFINE_STRUCT(WorldDecl,
+      (double, resolution_m),
+      (Point, origin),                     // the grid's lower-left corner
+      (std::vector<std::string>, rows));
+};
 struct MeaningDecl {
   BOOST_HANA_DEFINE_STRUCT(MeaningDecl,
       (std::string, robot),
@@ -53,8 +63,11 @@ struct MissionDecl {
       (std::vector<std::string>, marked_states),
       (std::vector<RobotDecl>, robots),
       (std::vector<TaskDecl>, tasks),
-      (std::vector<RegionDecl>, regions));
+      (std::vector<RegionDecl>, regions),
+      (std::optional<WorldDecl>, world));
   std::map<std::string, MeaningDecl> events;  // "events" is an object keyed by event name
+  // robots[i].radius, metres (read apart, so that RobotDecl keeps its two fields); 0 when absent.
+  std::vector<double> radii;
 };
 
 // Reads the JSON text; `file` names it in messages ("file:line:col" for syntax errors).
@@ -65,6 +78,7 @@ MissionDecl parse_mission_text(const std::string& text, const std::string& file)
 struct Robot {
   std::string name;
   Point start;
+  double radius = 0.0;  // metres; only a world's obstacles see it
 };
 struct Task {
   std::string name;
@@ -73,6 +87,15 @@ struct Task {
 struct Region {
   std::string name;
   Point lo, hi;  // lo[k] < hi[k]; a point p is inside iff lo[k] < p[k] < hi[k] for k = 0, 1
+};
+
+// The checked occupancy grid (spec/mission/world.hpp has its geometry and the path planner).
+struct GridWorld {
+  double resolution_m = 1.0;
+  Point origin{};                  // lower-left corner
+  std::size_t rows = 0, cols = 0;  // both > 0
+  std::vector<char> occupied;      // row-major, row 0 on top
+  std::vector<std::vector<char>> traversable;  // per robot, traversable_cells for its radius
 };
 
 enum class MeaningKind { task_start, region_entry };
@@ -92,6 +115,7 @@ struct Mission {
   std::vector<Robot> robots;
   std::vector<Task> tasks;
   std::vector<Region> regions;
+  std::optional<GridWorld> world;             // none: an empty plane (no obstacles)
   std::map<std::string, Meaning> events;      // exactly the events of fsm
   // Meanings given for events the FSM does not have: checked, then ignored (the supervisor does
   // not observe them, so they constrain nothing and fire nothing).
@@ -99,13 +123,15 @@ struct Mission {
 };
 
 // Resolves and checks `d` against `fsm` (read from the file d.fsm names). Checks, in order:
-// at least one robot; names unique within robots, tasks and regions; every region has two
-// corners with different x and different y; initial and marked states exist; every meaning names
-// one robot and exactly one of a task or a region, all existing; every FSM event has a meaning
-// (meanings of events the FSM lacks are kept aside in unused_events); task starts are controllable and region entries
-// uncontrollable in the FSM; the region entries of the robots' start positions (fired at time 0,
-// robot by robot, regions in file order) are enabled in turn from the initial state; some marked
-// state is reachable from the initial state.
+// at least one robot; names unique within robots, tasks and regions; radii >= 0; every region
+// has two corners with different x and different y; the world's grid and its size for each
+// radius (spec/mission/world.hpp); initial and marked states exist; every meaning names one
+// robot and exactly one of a task or a region, all existing; every FSM event has a meaning
+// (meanings of events the FSM lacks are kept aside in unused_events); task starts are
+// controllable and region entries uncontrollable in the FSM; the world's checks (check_world:
+// starts and tasks clear of walls, tasks and regions reachable); the region entries of the
+// robots' start positions (fired at time 0, robot by robot, regions in file order) are enabled
+// in turn from the initial state; some marked state is reachable from the initial state.
 Mission check_mission(const MissionDecl& d, const supervisor::Automaton& fsm,
                       const std::string& file);
 

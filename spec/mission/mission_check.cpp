@@ -2,9 +2,11 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
 #include <set>
 
 #include "spec/mission/mission.hpp"
+#include "spec/mission/world.hpp"
 #include "spec/supervisor/semantics.hpp"
 #include "spec/util/input_error.hpp"
 
@@ -152,9 +154,32 @@ Mission check_mission(const MissionDecl& d, const supervisor::Automaton& fsm,
     check_unique(d.robots, "robots");
     check_unique(d.tasks, "tasks");
     check_unique(d.regions, "regions");
-    for (const auto& r : d.robots) m.robots.push_back(Robot{r.name, r.start});
+    for (std::size_t i = 0; i < d.robots.size(); ++i) {
+      const double radius = i < d.radii.size() ? d.radii[i] : 0.0;
+      if (!std::isfinite(radius) || radius < 0.0 || radius > 1e6)
+        throw InputError(fmt::format("robots[{}].radius", i),
+                         fmt::format("expected a radius in metres, >= 0 and at most 1e6; got {}",
+                                     radius));
+      m.robots.push_back(Robot{d.robots[i].name, d.robots[i].start, radius});
+    }
     for (const auto& t : d.tasks) m.tasks.push_back(Task{t.name, t.at});
     for (std::size_t i = 0; i < d.regions.size(); ++i) m.regions.push_back(check_region(d.regions[i], i));
+    if (d.world) {
+      m.world = build_world(*d.world);
+      for (std::size_t i = 0; i < m.robots.size(); ++i) {
+        const double radius = m.robots[i].radius;
+        if (traversable_checks(*m.world, radius) > kMaxTraversableChecks)
+          throw InputError(fmt::format("robots[{}].radius", i),
+                           fmt::format("a radius of {} m in a world of {} x {} cells of {} m needs "
+                                       "{} neighbour checks to find its free cells; at most {} "
+                                       "(use larger cells or a smaller world)",
+                                       radius, m.world->rows, m.world->cols,
+                                       m.world->resolution_m,
+                                       traversable_checks(*m.world, radius),
+                                       kMaxTraversableChecks));
+        m.world->traversable.push_back(traversable_cells(*m.world, radius));
+      }
+    }
     check_state(fsm, d.initial_state, "initial_state", d.fsm);
     m.initial_state = d.initial_state;
     if (d.marked_states.empty())
@@ -170,6 +195,7 @@ Mission check_mission(const MissionDecl& d, const supervisor::Automaton& fsm,
         m.unused_events.push_back(event);
     }
     check_events(m);
+    check_world(m);
     check_starts(m);
     check_reachable(m);
     return m;

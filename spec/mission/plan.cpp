@@ -6,6 +6,7 @@
 #include <map>
 #include <utility>
 
+#include "spec/mission/world.hpp"
 #include "spec/supervisor/automaton.hpp"
 
 namespace swarmcheck::mission {
@@ -55,7 +56,7 @@ PathEvaluation evaluate_path(const Mission& m, const PlanQuery& q,
     const auto it = m.events.find(events[i]);
     if (it != m.events.end() && it->second.kind == MeaningKind::task_start) {
       const Meaning& mn = it->second;
-      travel[mn.robot] += distance(pos[mn.robot], m.tasks[mn.target].at);
+      travel[mn.robot] += travel_cost(m, mn.robot, pos[mn.robot], m.tasks[mn.target].at);
       pos[mn.robot] = m.tasks[mn.target].at;
     }
     state = *next;

@@ -5,7 +5,8 @@
 // where it is taken. Only its controllable events are chosen; its uncontrollable events are
 // waited for, and cost nothing. A controllable event starts a task: robot r's travel grows by the
 // straight-line distance from where r then is (its position in the query, or the task it started
-// last) to the task, and r is then at that task. With travel_r the query's committed travel plus
+// last) to the task, or, in a mission with a world, by the length of the A* route around the
+// obstacles (travel_cost, spec/mission/world.hpp), and r is then at that task. With travel_r the query's committed travel plus
 // the plan's, the cost of a plan is
 //     makespan = max_r travel_r,    total = sum_r travel_r (robots in index order),
 // compared lexicographically: smaller makespan, then smaller total. Travel accumulates per robot

@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "impl/mission/trace.hpp"
+#include "tests/mission/replay.hpp"
 #include "swarmcheck/mission.hpp"
 #include "spec/mission/avoidance.hpp"
 #include "spec/mission/plan.hpp"
@@ -18,6 +19,7 @@ namespace {
 
 namespace sm = swarmcheck::mission;
 namespace im = swarmcheck::impl::mission;
+using swarmcheck::test::replay;
 const std::string kMission = SWARMCHECK_SCENARIOS "/thesis/thesis-mission.json";
 
 std::size_t position_of(const sm::RunResult& r, const std::string& event) {
@@ -30,37 +32,6 @@ std::size_t position_of(const sm::RunResult& r, const std::string& event) {
 double time_of(const sm::RunResult& r, const std::string& event) {
   const std::size_t k = position_of(r, event);
   return k < r.events.size() ? r.events[k].time_s : -1.0;
-}
-
-// Replays a trace; returns "" when it is consistent, else the first broken rule.
-std::string replay(const sm::Mission& m, const im::MissionTrace& t) {
-  std::string state = t.initial_state;
-  std::vector<std::string> fired;  // events since the previous step record
-  const sm::StepRecord* prev = nullptr;
-  for (const auto& e : t.entries) {
-    if (e.is_event) {
-      const auto next = swarmcheck::supervisor::successor(m.fsm, state, e.event.event);
-      if (!next) return "event " + e.event.event + " fired in state " + state + ", where it is not enabled";
-      if (*next != e.event.state_after) return "event " + e.event.event + " recorded a wrong state";
-      state = *next;
-      fired.push_back(e.event.event);
-      continue;
-    }
-    if (e.step.state != state) return "step state differs from the replayed state";
-    std::vector<std::string> entries;
-    for (std::size_t r = 0; r < m.robots.size(); ++r) {
-      const sm::Point before = prev ? prev->positions[r] : m.robots[r].start;
-      for (const auto& ev : sm::entry_events(m, r, before, e.step.positions[r]))
-        entries.push_back(ev);
-    }
-    if (prev == nullptr) entries = sm::initial_entries(m);
-    for (const auto& ev : entries)
-      if (std::find(fired.begin(), fired.end(), ev) == fired.end())
-        return "a robot entered a region without its event " + ev + " at t=" + std::to_string(e.step.time_s);
-    fired.clear();
-    prev = &e.step;
-  }
-  return sm::is_marked(m, state) ? "" : "the trace does not end at a marked state";
 }
 
 void run_and_replay(sm::BodyModel body) {

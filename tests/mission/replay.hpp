@@ -1,0 +1,51 @@
+#pragma once
+// Replay of a mission run's trace (tests only): every event enabled in the state it fired in and
+// recording the right state after; every region entry seen in the positions fired its event in
+// that step; in a world, no position overlaps an obstacle (spec/mission/world.hpp); the trace
+// ends at a marked state. Returns "" when all hold, else the first broken rule.
+#include <algorithm>
+#include <string>
+#include <vector>
+
+#include "impl/mission/trace.hpp"
+#include "spec/mission/avoidance.hpp"
+#include "spec/mission/plan.hpp"
+#include "spec/mission/world.hpp"
+
+namespace swarmcheck::test {
+
+inline std::string replay(const swarmcheck::mission::Mission& m,
+                          const swarmcheck::impl::mission::MissionTrace& t) {
+  namespace sm = swarmcheck::mission;
+  std::string state = t.initial_state;
+  std::vector<std::string> fired;  // events since the previous step record
+  const sm::StepRecord* prev = nullptr;
+  for (const auto& e : t.entries) {
+    if (e.is_event) {
+      const auto next = swarmcheck::supervisor::successor(m.fsm, state, e.event.event);
+      if (!next) return "event " + e.event.event + " fired in state " + state + ", where it is not enabled";
+      if (*next != e.event.state_after) return "event " + e.event.event + " recorded a wrong state";
+      state = *next;
+      fired.push_back(e.event.event);
+      continue;
+    }
+    if (e.step.state != state) return "step state differs from the replayed state";
+    std::vector<std::string> entries;
+    for (std::size_t r = 0; r < m.robots.size(); ++r) {
+      const sm::Point before = prev ? prev->positions[r] : m.robots[r].start;
+      for (const auto& ev : sm::entry_events(m, r, before, e.step.positions[r]))
+        entries.push_back(ev);
+      if (m.world && sm::overlaps_obstacle(*m.world, e.step.positions[r], m.robots[r].radius))
+        return "robot " + m.robots[r].name + " overlaps an obstacle at t=" + std::to_string(e.step.time_s);
+    }
+    if (prev == nullptr) entries = sm::initial_entries(m);
+    for (const auto& ev : entries)
+      if (std::find(fired.begin(), fired.end(), ev) == fired.end())
+        return "a robot entered a region without its event " + ev + " at t=" + std::to_string(e.step.time_s);
+    fired.clear();
+    prev = &e.step;
+  }
+  return sm::is_marked(m, state) ? "" : "the trace does not end at a marked state";
+}
+
+}  // namespace swarmcheck::test
