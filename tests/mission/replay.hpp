@@ -4,6 +4,7 @@
 // that step; in a world, no position overlaps an obstacle (spec/mission/world.hpp); the trace
 // ends at a marked state. Returns "" when all hold, else the first broken rule.
 #include <algorithm>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -11,8 +12,25 @@
 #include "spec/mission/avoidance.hpp"
 #include "spec/mission/plan.hpp"
 #include "spec/mission/world.hpp"
+#include "swarmcheck/mission.hpp"
 
 namespace swarmcheck::test {
+
+// A run of the library with the given body, and its JSON Lines trace read back.
+struct TracedRun {
+  swarmcheck::mission::RunOptions options;
+  swarmcheck::mission::RunResult result;
+  swarmcheck::impl::mission::MissionTrace trace;
+};
+inline TracedRun run_traced(const swarmcheck::mission::Mission& m, swarmcheck::mission::BodyModel body) {
+  TracedRun out;
+  out.options.body = body;
+  std::stringstream text;
+  swarmcheck::impl::mission::TraceWriter writer(text, m, out.options);
+  out.result = swarmcheck::mission::run_mission(m, out.options, &writer);
+  out.trace = swarmcheck::impl::mission::read_trace(text, "trace");
+  return out;
+}
 
 inline std::string replay(const swarmcheck::mission::Mission& m,
                           const swarmcheck::impl::mission::MissionTrace& t) {

@@ -36,15 +36,12 @@ double time_of(const sm::RunResult& r, const std::string& event) {
 
 void run_and_replay(sm::BodyModel body) {
   const auto m = sm::load_mission(kMission);
-  sm::RunOptions o;
-  o.body = body;
-  std::stringstream trace;
-  im::TraceWriter writer(trace, m, o);
-  const auto r = sm::run_mission(m, o, &writer);
+  const auto run = swarmcheck::test::run_traced(m, body);
+  const auto& r = run.result;
+  const auto& t = run.trace;
   ASSERT_TRUE(r.completed) << r.reason;
   EXPECT_EQ(r.final_state, "s134:146:143");
   EXPECT_EQ(r.reason, "mission complete");
-  const auto t = im::read_trace(trace, "trace");
   EXPECT_EQ(replay(m, t), "");
   // The robots did the planned tasks: A 3 then 4, B 1 then 2; B starts as soon as the
   // supervisor allows it (state s14, A on its way to task 3), not after A's tasks.
@@ -122,13 +119,10 @@ void three_robots(sm::BodyModel body) {
   EXPECT_EQ(p.cost.makespan, 20.0);
   const auto planned = sm::task_sequences(m, p.events);
   EXPECT_EQ(planned, (std::vector<std::vector<std::size_t>>{{0}, {1}, {2}}));
-  sm::RunOptions o;
-  o.body = body;
-  std::stringstream trace;
-  im::TraceWriter writer(trace, m, o);
-  const auto r = sm::run_mission(m, o, &writer);
+  const auto run = swarmcheck::test::run_traced(m, body);
+  const auto& r = run.result;
   ASSERT_TRUE(r.completed) << r.reason;
-  EXPECT_EQ(replay(m, im::read_trace(trace, "trace")), "");
+  EXPECT_EQ(replay(m, run.trace), "");
   std::vector<std::string> starts;
   for (const auto& e : r.events)
     if (e.controllable) starts.push_back(e.event);

@@ -203,13 +203,9 @@ TEST(MissionWorld, PlanCostsRoutesAroundTheWalls) {
 
 void walls_run(sm::BodyModel body) {
   const auto m = sm::load_mission(kWalls);
-  sm::RunOptions o;
-  o.body = body;
-  std::stringstream trace;
-  im::TraceWriter writer(trace, m, o);
-  const auto r = sm::run_mission(m, o, &writer);
+  const auto run = swarmcheck::test::run_traced(m, body);
+  const auto& [o, r, t] = run;
   ASSERT_TRUE(r.completed) << r.reason;
-  const auto t = im::read_trace(trace, "trace");
   EXPECT_EQ(swarmcheck::test::replay(m, t), "");  // events enabled, no robot on a wall
   std::size_t steps = 0;
   for (const auto& e : t.entries) {
