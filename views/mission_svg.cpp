@@ -48,6 +48,12 @@ std::string walls_svg(const swarmcheck::mission::GridWorld& w, const FX& X, cons
                          num(static_cast<double>(end - j) * res * scale), num(res * scale));
       j = end;
     }
+  for (const auto& poly : w.polygons) {  // the polygons' outlines over their rasterised cells
+    std::string pts;
+    for (const auto& q : poly) pts += num(X(q[0])) + "," + num(Y(q[1])) + " ";
+    out += fmt::format("<polygon class=\"obstacle\" points=\"{}\" fill=\"#a8a29e\" "
+                       "fill-opacity=\"0.5\" stroke=\"#1c1917\" stroke-width=\"1.5\"/>\n", pts);
+  }
   return out + "</g>\n";
 }
 

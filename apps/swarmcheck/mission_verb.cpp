@@ -154,7 +154,10 @@ int run_run(const RunOptions& o) {
               {"makespan_planned", r.makespan_planned},
               {"replans", r.replans},
               {"plan_cache_hits", r.plan_cache_hits},
-              {"intervals", intervals}};
+              {"intervals", intervals},
+              {"yields", r.yields},
+              // least gap between two robots' disks over the run; null with one robot
+              {"clearance_min_m", std::isfinite(r.clearance_min_m) ? Json(r.clearance_min_m) : Json()}};
     fmt::print("{}\n", json_io::dump_text(j, 2));
   } else {
     for (const auto& e : r.events)
@@ -164,9 +167,11 @@ int run_run(const RunOptions& o) {
     for (std::size_t k = 0; k < m.robots.size(); ++k) {
       const std::string& n = m.robots[k].name;
       fmt::print("  robot {}: travelled {:.3f} m; busy {:.2f} s, waiting for the supervisor {:.2f} s, "
-                 "for a task {:.2f} s\n", n, r.travel[k], time_in(r, n, sm::Activity::busy),
+                 "for a task {:.2f} s, for a robot {:.2f} s\n", n, r.travel[k],
+                 time_in(r, n, sm::Activity::busy),
                  time_in(r, n, sm::Activity::waiting_for_supervisor),
-                 time_in(r, n, sm::Activity::waiting_for_task));
+                 time_in(r, n, sm::Activity::waiting_for_task),
+                 time_in(r, n, sm::Activity::waiting_for_robot));
     }
     fmt::print("  planned makespan {:.3f} m\n", r.makespan_planned);
   }

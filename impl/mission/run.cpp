@@ -15,6 +15,7 @@
 #include "spec/mission/avoidance.hpp"
 #include "spec/mission/plan.hpp"
 #include "spec/mission/run.hpp"
+#include "spec/mission/separation.hpp"
 #include "spec/mission/world.hpp"
 #include "swarmcheck/mission.hpp"
 
@@ -45,6 +46,8 @@ struct RobotSim {
   double planned = 0.0;                 // the cost model's travel of the tasks it was sent to
   double travelled = 0.0;
   bool blocked = false;
+  bool yielded = false;                 // kept its state: its move would overlap another robot
+  std::size_t yielded_to = 0;           // ... the robot it yielded to
   std::optional<sm::IntervalRecord> interval;  // its activity so far
 };
 
@@ -99,6 +102,9 @@ class Runner {
     const auto first = ask();
     result_.makespan_planned = first.found ? first.cost.makespan : 0.0;
     if (first.found) plan_ = first.events;
+    for (const auto& r : robots_) where_.push_back(r.pos);
+    result_.clearance_min_m = sm::kNoClearance;
+    check_apart(0.0);
     step_record(0.0);
     double t = 0.0;
     const auto steps_max = static_cast<long long>(o_.max_time_s / o_.dt_s);
@@ -115,7 +121,9 @@ class Runner {
       }
       const double before = t;
       t = static_cast<double>(k + 1) * o_.dt_s;
-      if (!move(before, t)) {
+      const bool progress = move(before, t);
+      check_apart(t);
+      if (!progress) {
         result_.reason = deadlock_reason();
         break;
       }
@@ -248,12 +256,20 @@ class Runner {
     for (std::size_t i = 0; i < robots_.size(); ++i) {
       RobotSim& r = robots_[i];
       r.blocked = false;
+      r.yielded = false;
       if (r.queue.empty()) continue;
       if (!r.driving && !r.following) start_leg(i);
       const Proposal p = propose(o_, rp_, r);
       if (m_.world && sm::overlaps_obstacle(*m_.world, p.pos, m_.robots[i].radius))
         throw std::logic_error(fmt::format("robot {} would overlap an obstacle at [{}, {}] at t = {} s",
                                            m_.robots[i].name, p.pos[0], p.pos[1], t));
+      if (const auto j = sm::yields_to(m_, i, r.pos, p.pos, ways())) {
+        r.yielded = true;
+        r.yielded_to = *j;
+        ++result_.yields;
+        did[i] = sm::Activity::waiting_for_robot;
+        continue;
+      }
       const auto entries = sm::entry_events(m_, i, r.pos, p.pos);
       if (!sm::fire_all(m_, state_, entries)) {
         r.blocked = true;
@@ -264,6 +280,7 @@ class Runner {
       progress = true;
       r.travelled += sm::distance(r.pos, p.pos);
       r.pos = p.pos;
+      where_[i] = p.pos;
       r.theta = p.theta;
       r.ctrl = p.ctrl;
       r.driving = p.driving;
@@ -347,6 +364,10 @@ class Runner {
     std::string out = fmt::format("deadlock in state {}: no robot can move (enabled events: {})",
                                   state_, enabled.empty() ? "none" : enabled);
     for (const auto& w : why) out += "; " + w;
+    for (std::size_t i = 0; i < robots_.size(); ++i)
+      if (robots_[i].yielded)
+        out += fmt::format("; robot {} yields to robot {}", m_.robots[i].name,
+                           m_.robots[robots_[i].yielded_to].name);
     return out;
   }
 
@@ -372,12 +393,29 @@ class Runner {
     result_.events.push_back(std::move(rec));
   }
 
+  std::vector<sm::RobotWay> ways() const {
+    std::vector<sm::RobotWay> out;
+    out.reserve(robots_.size());
+    for (const auto& r : robots_)
+      out.push_back({r.pos, !r.queue.empty(), r.leg,
+                     r.yielded ? std::optional<std::size_t>(r.yielded_to) : std::nullopt});
+    return out;
+  }
+
+  // No two robots overlap after a step (the yield rule guarantees it; a failure is a bug).
+  void check_apart(double t) {
+    const double c = sm::clearance_m(m_, where_);
+    if (!(c >= 0.0)) throw std::logic_error(fmt::format("two robots overlap at t = {} s", t));
+    result_.clearance_min_m = std::min(result_.clearance_min_m, c);
+  }
+
   void step_record(double t) {
     if (!obs_) return;
-    StepRecord s{t, state_, {}, {}};
+    StepRecord s{t, state_, {}, {}, {}};
     for (const auto& r : robots_) {
       s.positions.push_back(r.pos);
       s.blocked.push_back(r.blocked);
+      s.yielded.push_back(r.yielded);
     }
     obs_->on_step(s);
   }
@@ -393,6 +431,7 @@ class Runner {
   bool fresh_plan_ = false;                       // asked since the last event fired
   bool settled_ = false;  // the choice found nothing to issue, and no event fired since
   std::vector<RobotSim> robots_;
+  std::vector<sm::Point> where_;  // the robots' positions, kept with RobotSim::pos
   RunResult result_;
 };
 

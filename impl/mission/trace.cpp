@@ -46,8 +46,10 @@ void TraceWriter::on_step(const StepRecord& s) {
   for (const auto& p : s.positions) pos.push_back({p[0], p[1]});
   Json blocked = Json::array();
   for (const bool b : s.blocked) blocked.push_back(b);
+  Json yielded = Json::array();
+  for (const bool b : s.yielded) yielded.push_back(b);
   const Json j = {{"type", "step"}, {"t", s.time_s}, {"state", s.state},
-                  {"positions", pos}, {"blocked", blocked}};
+                  {"positions", pos}, {"blocked", blocked}, {"yielded", yielded}};
   out_ << j.dump() << '\n';
 }
 
@@ -86,6 +88,11 @@ MissionTrace read_trace(std::istream& in, const std::string& source) {
         e.step.state = j.at("state").get<std::string>();
         for (const auto& p : j.at("positions")) e.step.positions.push_back({p.at(0).get<double>(), p.at(1).get<double>()});
         for (const auto& b : j.at("blocked")) e.step.blocked.push_back(b.get<bool>());
+        // Traces written before the yield rule have no "yielded": no robot yielded then.
+        if (j.contains("yielded"))
+          for (const auto& b : j.at("yielded")) e.step.yielded.push_back(b.get<bool>());
+        else
+          e.step.yielded.assign(e.step.blocked.size(), false);
         t.entries.push_back(std::move(e));
       } else if (type == "interval") {
         swarmcheck::mission::IntervalRecord i;

@@ -4,9 +4,10 @@
 //   {"type":"header","format":"swarmcheck-mission-trace","version":1,"mission":..,"fsm":..,
 //    "initial_state":..,"robots":[names],"body":"unicycle"|"kinematic","dt":..}
 //   {"type":"event","t":..,"event":"a3s","robot":"A","kind":"c"|"uc","state":<state after>}
-//   {"type":"step","t":..,"state":..,"positions":[[x,y],..],"blocked":[false,..]}
+//   {"type":"step","t":..,"state":..,"positions":[[x,y],..],"blocked":[false,..],
+//    "yielded":[false,..]}                          (yielded: kept its pose for another robot)
 //   {"type":"interval","robot":"A","activity":"busy"|"waiting for the supervisor"|
-//    "waiting for a task","from":..,"to":..}      (as each robot's activity interval closes)
+//    "waiting for a task"|"waiting for a robot","from":..,"to":..}      (as each robot's activity interval closes)
 // Doubles are written so that they read back to the same bits. The public TraceFile
 // (swarmcheck/mission.hpp) is a TraceWriter on an io::AtomicFile.
 #include <iosfwd>

@@ -14,6 +14,7 @@
 #include "spec/exploration/body.hpp"
 #include "spec/exploration/controller.hpp"
 #include "spec/mission/avoidance.hpp"
+#include "spec/mission/separation.hpp"
 #include "spec/mission/world.hpp"
 #include "spec/util/demand.hpp"
 
@@ -39,6 +40,8 @@ struct Robot {
   double planned_m = 0.0;           // the cost model's travel of the tasks it was sent to
   double travelled_m = 0.0;
   bool blocked = false;
+  bool yielded = false;             // kept its state: its move would overlap another robot
+  std::size_t yielded_to = 0;       // ... the robot it yielded to
   std::optional<sm::IntervalRecord> open;  // its activity interval so far
 };
 
@@ -134,6 +137,27 @@ void fire(World& w, const std::string& e, double t) {
   w.result.events.push_back(rec);
 }
 
+std::vector<sm::Point> positions(const World& w) {
+  std::vector<sm::Point> out;
+  for (const Robot& r : w.robots) out.push_back(r.pos);
+  return out;
+}
+
+std::vector<sm::RobotWay> ways(const World& w) {
+  std::vector<sm::RobotWay> out;
+  for (const Robot& r : w.robots)
+    out.push_back({r.pos, !r.tasks.empty(), r.waypoint,
+                   r.yielded ? std::optional<std::size_t>(r.yielded_to) : std::nullopt});
+  return out;
+}
+
+// Rule 3's check after a step: no two robots overlap; the least clearance so far.
+void check_apart(World& w, double t) {
+  const double c = sm::clearance_m(w.m, positions(w));
+  if (!(c >= 0.0)) throw std::logic_error(fmt::format("two robots overlap at t = {} s", t));
+  w.result.clearance_min_m = std::min(w.result.clearance_min_m, c);
+}
+
 void record_step(const World& w, double t) {
   if (!w.observer) return;
   sm::StepRecord s;
@@ -142,6 +166,7 @@ void record_step(const World& w, double t) {
   for (const Robot& r : w.robots) {
     s.positions.push_back(r.pos);
     s.blocked.push_back(r.blocked);
+    s.yielded.push_back(r.yielded);
   }
   w.observer->on_step(s);
 }
@@ -303,12 +328,20 @@ bool move_all(World& w, double t_from, double t) {
   for (std::size_t i = 0; i < w.robots.size(); ++i) {
     Robot& r = w.robots[i];
     r.blocked = false;
+    r.yielded = false;
     if (r.tasks.empty()) continue;
     if (!r.on_leg && !r.following) start_leg(w, i);
     const Move mv = propose(w, r);
     if (w.m.world && sm::overlaps_obstacle(*w.m.world, mv.pos, w.m.robots[i].radius))
       throw std::logic_error(fmt::format("robot {} would overlap an obstacle at [{}, {}] at t = {} s",
                                          w.m.robots[i].name, mv.pos[0], mv.pos[1], t));
+    if (const auto j = sm::yields_to(w.m, i, r.pos, mv.pos, ways(w))) {
+      r.yielded = true;
+      r.yielded_to = *j;
+      ++w.result.yields;
+      did[i] = sm::Activity::waiting_for_robot;
+      continue;
+    }
     const std::vector<std::string> entries = sm::entry_events(w.m, i, r.pos, mv.pos);
     if (!sm::fire_all(w.m, w.q, entries)) {
       r.blocked = true;
@@ -351,6 +384,11 @@ std::string deadlock_reason(const World& w) {
       if (!swarmcheck::supervisor::successor(w.m.fsm, w.q, e))
         out += fmt::format("; robot {} waits to fire {}", w.m.robots[i].name, e);
   }
+  for (std::size_t i = 0; i < w.robots.size(); ++i) {
+    if (!w.robots[i].yielded) continue;
+    out += fmt::format("; robot {} yields to robot {}", w.m.robots[i].name,
+                       w.m.robots[w.robots[i].yielded_to].name);
+  }
   return out;
 }
 
@@ -366,6 +404,8 @@ sm::RunResult run_model(const sm::Mission& m, const sm::RunOptions& o, const Pla
   const sm::Plan first = ask(w);
   w.result.makespan_planned = first.found ? first.cost.makespan : 0.0;
   if (first.found) w.current = first.events;
+  w.result.clearance_min_m = sm::kNoClearance;
+  check_apart(w, 0.0);
   record_step(w, 0.0);
   double t = 0.0;
   const auto steps_max = static_cast<long long>(o.max_time_s / o.dt_s);
@@ -382,7 +422,9 @@ sm::RunResult run_model(const sm::Mission& m, const sm::RunOptions& o, const Pla
     }
     const double t_from = t;
     t = static_cast<double>(k + 1) * o.dt_s;
-    if (!move_all(w, t_from, t)) {
+    const bool moved = move_all(w, t_from, t);
+    check_apart(w, t);
+    if (!moved) {
       w.result.reason = deadlock_reason(w);
       break;
     }

@@ -24,11 +24,11 @@ void require_keys(const Json& j, const std::string& path,
     if (!j.contains(key)) throw InputError(json_io::join_key(path, key), std::string("missing (") + what + ")");
 }
 
-void require_each(const Json& j, const char* list,
+void require_each(const Json& j, const char* list, const std::string& path,
                   std::initializer_list<std::pair<const char*, const char*>> keys) {
   if (!j.contains(list) || !j[list].is_array()) return;  // from_json reports the type
   for (std::size_t i = 0; i < j[list].size(); ++i)
-    require_keys(j[list][i], json_io::join_index(list, i), keys);
+    require_keys(j[list][i], json_io::join_index(path, i), keys);
 }
 
 // Coordinates within +-1e9 m (a million km): distances, path lengths and makespans summed from
@@ -48,15 +48,17 @@ MissionDecl decl_from_json(const Json& j) {
                        {"robots", "a list of {\"name\", \"start\": [x, y]}"},
                        {"tasks", "a list of {\"name\", \"at\": [x, y]}"},
                        {"events", "an object giving each FSM event its meaning"}});
-  require_each(j, "robots", {{"name", "the robot's name"}, {"start", "its start position [x, y]"}});
-  require_each(j, "tasks", {{"name", "the task's name"}, {"at", "its position [x, y]"}});
-  require_each(j, "regions", {{"name", "the region's name"},
+  require_each(j, "robots", "robots", {{"name", "the robot's name"}, {"start", "its start position [x, y]"}});
+  require_each(j, "tasks", "tasks", {{"name", "the task's name"}, {"at", "its position [x, y]"}});
+  require_each(j, "regions", "regions", {{"name", "the region's name"},
                               {"corners", "two opposite corners [[x1, y1], [x2, y2]]"}});
   if (j.contains("world"))
     require_keys(j["world"], "world",
                  {{"resolution_m", "the side of a grid cell in metres"},
-                  {"origin", "the grid's lower-left corner [x, y]"},
-                  {"rows", "the grid's rows, top first: '#' occupied, '.' free"}});
+                  {"origin", "the grid's lower-left corner [x, y]"}});
+  if (j.contains("world") && j["world"].contains("obstacles"))
+    require_each(j["world"], "obstacles", "world.obstacles",
+                 {{"polygon", "its corners in order [[x, y], ...]"}});
   MissionDecl d;
   Json rest = j;
   rest.erase("events");
@@ -87,6 +89,11 @@ MissionDecl decl_from_json(const Json& j) {
   for (std::size_t i = 0; i < d.tasks.size(); ++i)
     require_finite(d.tasks[i].at, json_io::join_index("tasks", i) + ".at");
   if (d.world) require_finite(d.world->origin, "world.origin");
+  if (d.world && d.world->obstacles)
+    for (std::size_t k = 0; k < d.world->obstacles->size(); ++k)
+      for (std::size_t i = 0; i < (*d.world->obstacles)[k].polygon.size(); ++i)
+        require_finite((*d.world->obstacles)[k].polygon[i],
+                       json_io::join_index(json_io::join_index("world.obstacles", k) + ".polygon", i));
   for (std::size_t i = 0; i < d.regions.size(); ++i)
     for (std::size_t k = 0; k < 2; ++k)
       require_finite(d.regions[i].corners[k],

@@ -42,12 +42,19 @@ struct TaskDecl {
 struct RegionDecl {
   BOOST_HANA_DEFINE_STRUCT(RegionDecl, (std::string, name), (std::array<Point, 2>, corners));
 };
-// The occupancy grid (spec/mission/world.hpp): '#' occupied, '.' free, first row on top.
+// A polygon obstacle (spec/mission/polygon.hpp): its corners in order, the closing edge implied.
+struct ObstacleDecl {
+  BOOST_HANA_DEFINE_STRUCT(ObstacleDecl, (std::vector<Point>, polygon));
+};
+// The occupancy grid (spec/mission/world.hpp): '#' occupied, '.' free, first row on top; or a
+// free grid of size_m; either with polygon obstacles rasterised onto it.
 struct WorldDecl {
   BOOST_HANA_DEFINE_STRUCT(WorldDecl,
       (double, resolution_m),
       (Point, origin),                     // the grid's lower-left corner
-      (std::vector<std::string>, rows));
+      (std::optional<std::vector<std::string>>, rows),
+      (std::optional<Point>, size_m),      // [width, height]: when there are no rows
+      (std::optional<std::vector<ObstacleDecl>>, obstacles));
 };
 struct MeaningDecl {
   BOOST_HANA_DEFINE_STRUCT(MeaningDecl,
@@ -95,6 +102,7 @@ struct GridWorld {
   Point origin{};                  // lower-left corner
   std::size_t rows = 0, cols = 0;  // both > 0
   std::vector<char> occupied;      // row-major, row 0 on top
+  std::vector<std::vector<Point>> polygons;    // the obstacles rasterised into `occupied`
   std::vector<std::vector<char>> traversable;  // per robot, traversable_cells for its radius
 };
 

@@ -6,6 +6,7 @@
 #include <set>
 
 #include "spec/mission/mission.hpp"
+#include "spec/mission/separation.hpp"
 #include "spec/mission/world.hpp"
 #include "spec/supervisor/semantics.hpp"
 #include "spec/util/input_error.hpp"
@@ -196,6 +197,7 @@ Mission check_mission(const MissionDecl& d, const supervisor::Automaton& fsm,
     }
     check_events(m);
     check_world(m);
+    check_robots_apart(m);
     check_starts(m);
     check_reachable(m);
     return m;

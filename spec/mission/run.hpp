@@ -55,14 +55,23 @@
 //     coordinate clamped to [lo + m, hi - m], m = min(0.5, side / 4)).
 //     It proposes a pose: `kinematic`, a straight line at speed_m_per_s, landing on the waypoint
 //     when it is within one step; `unicycle`, the exploration controller_step then body_step
-//     over dt (the waypoint's flag is 1 until the controller has taken it). If the entry events
+//     over dt (the waypoint's flag is 1 until the controller has taken it). In a world, a
+//     proposal overlapping an obstacle is a bug (std::logic_error). If the robot must give way
+//     (spec/mission/separation.hpp: yields_to, against the robots' current positions and ways,
+//     those before it in index order already moved), it *yields*: it keeps its whole state,
+//     fires nothing, and yields counts it. Else, if the entry events
 //     of the move (entry_events) do not all fire in turn from q, the robot is blocked and keeps
 //     its whole state; otherwise it takes the proposal, travel grows by the distance moved, on
 //     arrival at a task that task leaves its queue (and the leg ends), and the entry events fire
 //     at t'. If no robot moved, the run ends in a deadlock, whose reason lists q's enabled events
-//     and, per blocked robot, the entry events of its proposal q does not enable.
+//     and, per blocked robot, the entry events of its proposal q does not enable, then per
+//     yielding robot (index order) "robot B yields to robot A" (A = the robot it yielded to).
+//     After the step (the deadlocked one too), clearance_m of the positions must be >= 0 (else
+//     std::logic_error: the rule was broken); clearance_min_m is its least value over the
+//     positions at time 0 and after every motion step (+infinity with one robot).
 //     Activity: over (t, t'] each robot is `busy` (it moved), `waiting for the supervisor` (it
-//     has queued tasks and was blocked) or `waiting for a task` (no queued task). An interval is
+//     has queued tasks and was blocked), `waiting for a robot` (it yielded) or `waiting for a
+//     task` (no queued task). An interval is
 //     a maximal run of steps of one robot with one activity; when a robot's activity changes,
 //     its interval so far closes (to = t) and is reported, robots in index order, before the
 //     step record. This is done for the deadlocked step too.
@@ -110,11 +119,12 @@ struct StepRecord {
       (double, time_s),
       (std::string, state),
       (std::vector<Point>, positions),
-      (std::vector<bool>, blocked));  // kept its pose because an entry event was not enabled
+      (std::vector<bool>, blocked),   // kept its pose because an entry event was not enabled
+      (std::vector<bool>, yielded));  // kept its pose because it would overlap another robot
 };
 
 // What a robot did over a step (rule 3): `busy` moved; the two kinds of waiting.
-enum class Activity { busy, waiting_for_supervisor, waiting_for_task };
+enum class Activity { busy, waiting_for_supervisor, waiting_for_task, waiting_for_robot };
 
 struct IntervalRecord {
   BOOST_HANA_DEFINE_STRUCT(IntervalRecord,
@@ -143,8 +153,12 @@ struct RunResult {
       (double, makespan_planned),        // of the first plan
       (std::size_t, replans),
       (std::size_t, plan_cache_hits),
-      (std::vector<IntervalRecord>, intervals));  // in the order they closed
-  RunResult() : completed(false), time_s(0.0), makespan_planned(0.0), replans(0), plan_cache_hits(0) {}
+      (std::vector<IntervalRecord>, intervals),   // in the order they closed
+      (std::size_t, yields),             // robot-steps a robot yielded to another (rule 3)
+      (double, clearance_min_m));        // least clearance_m of the step records (>= 0)
+  RunResult()
+      : completed(false), time_s(0.0), makespan_planned(0.0), replans(0), plan_cache_hits(0),
+        yields(0), clearance_min_m(0.0) {}
 };
 
 }  // namespace swarmcheck::mission
@@ -160,9 +174,10 @@ struct EnumNames<swarmcheck::mission::BodyModel> {
 };
 template <>
 struct EnumNames<swarmcheck::mission::Activity> {
-  static constexpr std::array<std::pair<swarmcheck::mission::Activity, std::string_view>, 3> names{
+  static constexpr std::array<std::pair<swarmcheck::mission::Activity, std::string_view>, 4> names{
       {{swarmcheck::mission::Activity::busy, "busy"},
        {swarmcheck::mission::Activity::waiting_for_supervisor, "waiting for the supervisor"},
-       {swarmcheck::mission::Activity::waiting_for_task, "waiting for a task"}}};
+       {swarmcheck::mission::Activity::waiting_for_task, "waiting for a task"},
+       {swarmcheck::mission::Activity::waiting_for_robot, "waiting for a robot"}}};
 };
 }  // namespace swarmcheck::json_io

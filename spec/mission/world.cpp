@@ -11,6 +11,7 @@
 #include <set>
 #include <utility>
 
+#include "spec/mission/polygon.hpp"
 #include "spec/util/input_error.hpp"
 
 namespace swarmcheck::mission {
@@ -125,12 +126,16 @@ Point cell_centre(const GridWorld& w, std::size_t cell) {
   return {ll[0] + w.resolution_m / 2, ll[1] + w.resolution_m / 2};
 }
 
+bool leaves_grid(const GridWorld& w, const Point& p, double radius_m) {
+  const double res = w.resolution_m;
+  return p[0] - radius_m < w.origin[0] || p[1] - radius_m < w.origin[1] ||
+         p[0] + radius_m > w.origin[0] + static_cast<double>(w.cols) * res ||
+         p[1] + radius_m > w.origin[1] + static_cast<double>(w.rows) * res;
+}
+
 bool overlaps_obstacle(const GridWorld& w, const Point& p, double radius_m) {
   const double res = w.resolution_m;
-  if (p[0] - radius_m < w.origin[0] || p[1] - radius_m < w.origin[1] ||
-      p[0] + radius_m > w.origin[0] + static_cast<double>(w.cols) * res ||
-      p[1] + radius_m > w.origin[1] + static_cast<double>(w.rows) * res)
-    return true;
+  if (leaves_grid(w, p, radius_m)) return true;
   const auto index = [&](double v, double o) { return static_cast<Index>(std::floor((v - o) / res)); };
   const Index j0 = std::max(Index{0}, index(p[0] - radius_m, w.origin[0]) - 1);
   const Index j1 = std::min(cols_of(w) - 1, index(p[0] + radius_m, w.origin[0]) + 1);
@@ -218,23 +223,20 @@ double travel_cost(const Mission& m, std::size_t robot, const Point& from, const
   return r ? r->length_m : std::numeric_limits<double>::infinity();
 }
 
-GridWorld build_world(const WorldDecl& d) {
-  if (!std::isfinite(d.resolution_m) || d.resolution_m <= 0.0 || d.resolution_m > 1e6)
-    throw InputError("world.resolution_m",
-                     fmt::format("expected a cell side in metres, > 0 and at most 1e6; got {}",
-                                 d.resolution_m));
-  if (d.rows.empty() || d.rows[0].empty())
+namespace {
+
+// The grid of "rows" (checked), or nothing when the file gives size_m instead.
+GridWorld grid_of_rows(const std::vector<std::string>& rows) {
+  if (rows.empty() || rows[0].empty())
     throw InputError("world.rows", "expected at least one row of at least one cell");
   GridWorld w;
-  w.resolution_m = d.resolution_m;
-  w.origin = d.origin;
-  w.rows = d.rows.size();
-  w.cols = d.rows[0].size();
+  w.rows = rows.size();
+  w.cols = rows[0].size();
   if (w.rows * w.cols > kMaxWorldCells)
     throw InputError("world.rows", fmt::format("expected at most {} cells; got {} x {}",
                                                kMaxWorldCells, w.rows, w.cols));
   for (std::size_t i = 0; i < w.rows; ++i) {
-    const std::string& row = d.rows[i];
+    const std::string& row = rows[i];
     const auto bad = row.find_first_not_of(".#");
     if (row.size() != w.cols || bad != std::string::npos)
       throw InputError(fmt::format("world.rows[{}]", i),
@@ -249,9 +251,99 @@ GridWorld build_world(const WorldDecl& d) {
   return w;
 }
 
+// A free grid of ceil(width / res) x ceil(height / res) cells (columns x rows).
+GridWorld grid_of_size(const Point& size_m, double res) {
+  const double cols = std::ceil(size_m[0] / res), rows = std::ceil(size_m[1] / res);
+  if (!(size_m[0] > 0.0 && size_m[1] > 0.0) || !std::isfinite(cols) || !std::isfinite(rows) ||
+      cols * rows > static_cast<double>(kMaxWorldCells))
+    throw InputError("world.size_m",
+                     fmt::format("expected [width, height] in metres, both > 0, of at most {} cells "
+                                 "of {} m; got [{}, {}]",
+                                 kMaxWorldCells, res, size_m[0], size_m[1]));
+  GridWorld w;
+  w.rows = static_cast<std::size_t>(rows);
+  w.cols = static_cast<std::size_t>(cols);
+  w.occupied.assign(w.rows * w.cols, 0);
+  return w;
+}
+
+void add_polygons(GridWorld& w, const std::vector<ObstacleDecl>& obstacles) {
+  for (std::size_t k = 0; k < obstacles.size(); ++k) {
+    const auto& poly = obstacles[k].polygon;
+    const std::string path = fmt::format("world.obstacles[{}].polygon", k);
+    if (poly.size() < 3)
+      throw InputError(path, fmt::format("expected a polygon of at least 3 points [x, y]; got {}",
+                                         poly.size()));
+    if (polygon_area2(poly) == 0.0)
+      throw InputError(path, "expected a polygon of non-zero area; its points are on one line");
+    const std::vector<char> cells = polygon_cells(w, poly);
+    for (std::size_t c = 0; c < cells.size(); ++c) w.occupied[c] = w.occupied[c] || cells[c];
+    w.polygons.push_back(poly);
+  }
+}
+
+}  // namespace
+
+GridWorld build_world(const WorldDecl& d) {
+  if (!std::isfinite(d.resolution_m) || d.resolution_m <= 0.0 || d.resolution_m > 1e6)
+    throw InputError("world.resolution_m",
+                     fmt::format("expected a cell side in metres, > 0 and at most 1e6; got {}",
+                                 d.resolution_m));
+  if (d.rows && d.size_m)
+    throw InputError("world.size_m", "expected either \"rows\" or \"size_m\", not both");
+  if (!d.rows && !d.size_m)
+    throw InputError("world.rows", "missing (the grid's rows, top first: '#' occupied, '.' free; "
+                                   "or world.size_m, [width, height] in metres of a free grid)");
+  GridWorld w = d.rows ? grid_of_rows(*d.rows) : grid_of_size(*d.size_m, d.resolution_m);
+  w.resolution_m = d.resolution_m;
+  w.origin = d.origin;
+  if (d.obstacles) add_polygons(w, *d.obstacles);
+  return w;
+}
+
+namespace {
+
+// A polygon obstacle covering a robot's start or a task it may start: the message names the
+// polygon's JSON path (the generic checks of check_world would only name the point's).
+void check_polygons_clear(const Mission& m, const std::vector<std::set<std::size_t>>& tasks) {
+  const GridWorld& w = *m.world;
+  for (std::size_t k = 0; k < w.polygons.size(); ++k) {
+    GridWorld only;
+    only.resolution_m = w.resolution_m;
+    only.origin = w.origin;
+    only.rows = w.rows;
+    only.cols = w.cols;
+    only.occupied = polygon_cells(w, w.polygons[k]);
+    const auto covers = [&](const Point& p, double radius) {
+      return !leaves_grid(w, p, radius) && overlaps_obstacle(only, p, radius);
+    };
+    const std::string path = fmt::format("world.obstacles[{}].polygon", k);
+    for (std::size_t r = 0; r < m.robots.size(); ++r) {
+      const Robot& robot = m.robots[r];
+      if (covers(robot.start, robot.radius))
+        throw InputError(path, fmt::format("the polygon's cells cover the start {} of robot {} "
+                                           "(radius {} m), robots[{}].start",
+                                           point_text(robot.start), robot.name, robot.radius, r));
+      for (const std::size_t t : tasks[r])
+        if (covers(m.tasks[t].at, robot.radius))
+          throw InputError(path, fmt::format("the polygon's cells cover task {} at {} (tasks[{}].at) "
+                                             "for robot {} (radius {} m)",
+                                             m.tasks[t].name, point_text(m.tasks[t].at), t,
+                                             robot.name, robot.radius));
+    }
+  }
+}
+
+}  // namespace
+
 void check_world(const Mission& m) {
   if (!m.world) return;
   const GridWorld& w = *m.world;
+  // Per robot, the tasks and regions its events name.
+  std::vector<std::set<std::size_t>> tasks(m.robots.size()), regions(m.robots.size());
+  for (const auto& [name, mn] : m.events)
+    (mn.kind == MeaningKind::task_start ? tasks : regions)[mn.robot].insert(mn.target);
+  check_polygons_clear(m, tasks);
   for (std::size_t r = 0; r < m.robots.size(); ++r)
     if (overlaps_obstacle(w, m.robots[r].start, m.robots[r].radius))
       throw InputError(fmt::format("robots[{}].start", r),
@@ -259,10 +351,6 @@ void check_world(const Mission& m) {
                                    "or leaves its grid",
                                    m.robots[r].name, m.robots[r].radius,
                                    point_text(m.robots[r].start)));
-  // Per robot, the tasks and regions its events name.
-  std::vector<std::set<std::size_t>> tasks(m.robots.size()), regions(m.robots.size());
-  for (const auto& [name, mn] : m.events)
-    (mn.kind == MeaningKind::task_start ? tasks : regions)[mn.robot].insert(mn.target);
   for (std::size_t t = 0; t < m.tasks.size(); ++t)
     for (std::size_t r = 0; r < m.robots.size(); ++r)
       if (tasks[r].count(t) && overlaps_obstacle(w, m.tasks[t].at, m.robots[r].radius))

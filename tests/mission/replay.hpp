@@ -1,7 +1,8 @@
 #pragma once
 // Replay of a mission run's trace (tests only): every event enabled in the state it fired in and
 // recording the right state after; every region entry seen in the positions fired its event in
-// that step; in a world, no position overlaps an obstacle (spec/mission/world.hpp); the trace
+// that step; in a world, no position overlaps an obstacle (spec/mission/world.hpp); no two robots
+// overlap (distance < sum of radii, spec/mission/separation.hpp); the trace
 // ends at a marked state. Returns "" when all hold, else the first broken rule.
 #include <algorithm>
 #include <sstream>
@@ -55,6 +56,10 @@ inline std::string replay(const swarmcheck::mission::Mission& m,
         entries.push_back(ev);
       if (m.world && sm::overlaps_obstacle(*m.world, e.step.positions[r], m.robots[r].radius))
         return "robot " + m.robots[r].name + " overlaps an obstacle at t=" + std::to_string(e.step.time_s);
+      for (std::size_t o = 0; o < r; ++o)
+        if (sm::distance(e.step.positions[r], e.step.positions[o]) < m.robots[r].radius + m.robots[o].radius)
+          return "robot " + m.robots[r].name + " overlaps robot " + m.robots[o].name + " at t=" +
+                 std::to_string(e.step.time_s);
     }
     if (prev == nullptr) entries = sm::initial_entries(m);
     for (const auto& ev : entries)

@@ -16,6 +16,7 @@
 #include "conformance/mission/differential.hpp"
 #include "conformance/mission/generate.hpp"
 #include "impl/mission/trace.hpp"
+#include "spec/mission/separation.hpp"
 #include "spec/mission/world.hpp"
 #include "spec/util/hana_json.hpp"
 #include "spec/util/input_error.hpp"
@@ -176,7 +177,8 @@ TEST(MissionWorld, BadWorldsGetOneMessageAtTheirJsonPath) {
             "12318739200 neighbour checks to find its free cells; at most 268435456 (use larger "
             "cells or a smaller world)");
   EXPECT_EQ(message_for([](Json& j) { j["world"].erase("rows"); }),
-            "world.rows: missing (the grid's rows, top first: '#' occupied, '.' free)");
+            "world.rows: missing (the grid's rows, top first: '#' occupied, '.' free; or "
+            "world.size_m, [width, height] in metres of a free grid)");
   EXPECT_EQ(message_for([](Json& j) { j["world"]["walls"] = 1; }).substr(0, 12), "world.walls:");
 }
 
@@ -264,6 +266,7 @@ RC_GTEST_PROP(MissionWorld, ImplRunEqualsModelRunOnGeneratedWalledMissions, ()) 
   }
   try {
     sm::check_world(m);
+    sm::check_robots_apart(m);
   } catch (const swarmcheck::InputError&) {
     RC_DISCARD("the world's checks reject it");
   }
