@@ -3,11 +3,8 @@
 // example run to completion without touching a wall or another robot, library and model alike.
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
-#include <unistd.h>
 
 #include <cstdlib>
-#include <filesystem>
-#include <fstream>
 #include <functional>
 #include <nlohmann/json.hpp>
 
@@ -16,12 +13,12 @@
 #include "spec/mission/world.hpp"
 #include "spec/util/input_error.hpp"
 #include "swarmcheck/mission.hpp"
+#include "tests/mission/edited_mission.hpp"
 #include "tests/mission/replay.hpp"
 
 namespace {
 
 namespace sm = swarmcheck::mission;
-namespace fs = std::filesystem;
 using Json = nlohmann::ordered_json;
 const std::string kPolygons = SWARMCHECK_SCENARIOS "/examples/polygons.json";
 const bool kSeededPolygon = [] { return ::setenv("RC_PARAMS", "seed=31 max_success=300", 0) == 0; }();
@@ -93,24 +90,10 @@ RC_GTEST_PROP(MissionPolygon, NoPointInsideAPolygonIsInAFreeCellOnRandomPolygons
     }
 }
 
-// The polygon example, edited by `edit`, loaded from a fresh directory: "" or the message after
-// "m.json: ".
-std::string polygon_message(const std::function<void(Json&)>& edit) {
-  const fs::path d = fs::temp_directory_path() / ("swarmcheck_polygon_" + std::to_string(::getpid()));
-  fs::create_directories(d);
-  fs::copy_file(SWARMCHECK_SCENARIOS "/examples/two-tasks.fsm", d / "two-tasks.fsm",
-                fs::copy_options::overwrite_existing);
-  std::ifstream in(kPolygons);
-  Json j = Json::parse(in);
-  edit(j);
-  std::ofstream(d / "m.json") << j.dump(2);
-  try {
-    sm::load_mission((d / "m.json").string());
-  } catch (const swarmcheck::InputError& e) {
-    const std::string s = e.what();
-    return s.substr(s.find("m.json: ") + 8);
-  }
-  return "";
+// The polygon example, edited by `edit`: "" or the message after "m.json: ".
+std::string polygon_message(const swarmcheck::test::EditJson& edit) {
+  return swarmcheck::test::message_of_edited("polygon", kPolygons,
+                                             SWARMCHECK_SCENARIOS "/examples/two-tasks.fsm", edit);
 }
 
 TEST(MissionPolygon, BadPolygonsGetOneMessageAtTheirJsonPath) {

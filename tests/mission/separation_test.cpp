@@ -4,11 +4,8 @@
 // are two robots closer than the sum of their radii, and the library equals the model bit for bit.
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
-#include <unistd.h>
 
 #include <cstdlib>
-#include <filesystem>
-#include <fstream>
 #include <functional>
 #include <nlohmann/json.hpp>
 
@@ -18,35 +15,21 @@
 #include "spec/util/hana_json.hpp"
 #include "spec/util/input_error.hpp"
 #include "swarmcheck/mission.hpp"
+#include "tests/mission/edited_mission.hpp"
 #include "tests/mission/replay.hpp"
 
 namespace {
 
 namespace sm = swarmcheck::mission;
 namespace cm = swarmcheck::conformance::mission;
-namespace fs = std::filesystem;
 using Json = nlohmann::ordered_json;
 const std::string kCrossing = SWARMCHECK_SCENARIOS "/examples/crossing.json";
 const bool kSeededSeparation = [] { return ::setenv("RC_PARAMS", "seed=23 max_success=400", 0) == 0; }();
 
-// The crossing example edited by `edit`, loaded from a fresh directory (or the InputError's text
-// after "m.json: " in `error`).
-std::optional<sm::Mission> crossing_with(const std::function<void(Json&)>& edit, std::string* error) {
-  const fs::path d = fs::temp_directory_path() / ("swarmcheck_separation_" + std::to_string(::getpid()));
-  fs::create_directories(d);
-  fs::copy_file(SWARMCHECK_SCENARIOS "/examples/two-tasks.fsm", d / "two-tasks.fsm",
-                fs::copy_options::overwrite_existing);
-  std::ifstream in(kCrossing);
-  Json j = Json::parse(in);
-  edit(j);
-  std::ofstream(d / "m.json") << j.dump(2);
-  try {
-    return sm::load_mission((d / "m.json").string());
-  } catch (const swarmcheck::InputError& e) {
-    const std::string s = e.what();
-    if (error) *error = s.substr(s.find("m.json: ") + 8);
-    return std::nullopt;
-  }
+// The crossing example edited by `edit` (or the InputError's text after "m.json: " in `error`).
+std::optional<sm::Mission> crossing_with(const swarmcheck::test::EditJson& edit, std::string* error) {
+  return swarmcheck::test::load_edited("separation", kCrossing,
+                                       SWARMCHECK_SCENARIOS "/examples/two-tasks.fsm", edit, error);
 }
 
 TEST(MissionSeparation, YieldsToTheFirstOverlappingRobotAndTouchingIsAllowed) {

@@ -4,11 +4,8 @@
 // enabled when it fired).
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
-#include <unistd.h>
 
 #include <cstdlib>
-#include <filesystem>
-#include <fstream>
 #include <functional>
 #include <nlohmann/json.hpp>
 #include <sstream>
@@ -21,6 +18,7 @@
 #include "spec/util/hana_json.hpp"
 #include "spec/util/input_error.hpp"
 #include "swarmcheck/mission.hpp"
+#include "tests/mission/edited_mission.hpp"
 #include "tests/mission/replay.hpp"
 
 namespace {
@@ -28,7 +26,6 @@ namespace {
 namespace sm = swarmcheck::mission;
 namespace im = swarmcheck::impl::mission;
 namespace cm = swarmcheck::conformance::mission;
-namespace fs = std::filesystem;
 using Json = nlohmann::ordered_json;
 const std::string kWalls = SWARMCHECK_SCENARIOS "/examples/walls.json";
 const bool kSeededWorld = [] { return ::setenv("RC_PARAMS", "seed=21 max_success=300", 0) == 0; }();
@@ -124,24 +121,11 @@ RC_GTEST_PROP(MissionWorld, RoutesNeverOverlapObstaclesOnRandomGrids, ()) {
   RC_ASSERT(r->length_m >= sm::distance(from, to) * (1 - 1e-12));
 }
 
-// The walled example, edited by `edit`, in a fresh directory; the message load_mission throws
-// after "m.json: ", or "" when it loads.
-std::string message_for(const std::function<void(Json&)>& edit) {
-  const fs::path d = fs::temp_directory_path() / ("swarmcheck_world_check_" + std::to_string(::getpid()));
-  fs::create_directories(d);
-  fs::copy_file(SWARMCHECK_SCENARIOS "/examples/one-at-a-time.fsm", d / "one-at-a-time.fsm",
-                fs::copy_options::overwrite_existing);
-  std::ifstream in(kWalls);
-  Json j = Json::parse(in);
-  edit(j);
-  std::ofstream(d / "m.json") << j.dump(2);
-  try {
-    sm::load_mission((d / "m.json").string());
-  } catch (const swarmcheck::InputError& e) {
-    const std::string s = e.what();
-    return s.substr(s.find("m.json: ") + 8);
-  }
-  return "";
+// The walled example, edited by `edit`: the message load_mission throws after "m.json: ", or ""
+// when it loads.
+std::string message_for(const swarmcheck::test::EditJson& edit) {
+  return swarmcheck::test::message_of_edited("world_check", kWalls,
+                                             SWARMCHECK_SCENARIOS "/examples/one-at-a-time.fsm", edit);
 }
 
 TEST(MissionWorld, BadWorldsGetOneMessageAtTheirJsonPath) {
