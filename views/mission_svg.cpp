@@ -54,6 +54,12 @@ std::string walls_svg(const swarmcheck::mission::GridWorld& w, const FX& X, cons
     out += fmt::format("<polygon class=\"obstacle\" points=\"{}\" fill=\"#a8a29e\" "
                        "fill-opacity=\"0.5\" stroke=\"#1c1917\" stroke-width=\"1.5\"/>\n", pts);
   }
+  for (const auto& poly : w.unknown_polygons) {  // not on the map: dashed, for the sensor to find
+    std::string pts;
+    for (const auto& q : poly) pts += num(X(q[0])) + "," + num(Y(q[1])) + " ";
+    out += fmt::format("<polygon class=\"unknown-obstacle\" points=\"{}\" fill=\"#fca5a5\" "
+                       "fill-opacity=\"0.5\" stroke=\"#b91c1c\" stroke-dasharray=\"4 3\"/>\n", pts);
+  }
   return out + "</g>\n";
 }
 

@@ -44,6 +44,7 @@ struct RunOptions {
   double max_time = 3600.0;
   Budgets budgets;
   double speed = 0.5;
+  std::uint64_t seed = 1;
   bool json = false;
 };
 
@@ -126,6 +127,7 @@ int run_run(const RunOptions& o) {
   ro.dt_s = o.dt;
   ro.max_time_s = o.max_time;
   ro.speed_m_per_s = o.speed;
+  ro.seed = o.seed;
   std::unique_ptr<sm::TraceFile> trace;
   if (!o.trace.empty()) trace = std::make_unique<sm::TraceFile>(o.trace, m, ro);
   views::MissionPathRecorder paths(m.robots.size(), trace.get());
@@ -156,6 +158,7 @@ int run_run(const RunOptions& o) {
               {"plan_cache_hits", r.plan_cache_hits},
               {"intervals", intervals},
               {"yields", r.yields},
+              {"replans_sensed", r.replans_sensed},
               // least gap between two robots' disks over the run; null with one robot
               {"clearance_min_m", std::isfinite(r.clearance_min_m) ? Json(r.clearance_min_m) : Json()}};
     fmt::print("{}\n", json_io::dump_text(j, 2));
@@ -206,6 +209,7 @@ void add_mission_verb(CLI::App& app, int& exit_code) {
   run->add_option("--max-time", ro->max_time, "time limit, s (default 3600)")
       ->check(CLI::Range(0.0, 1e7));
   add_budget_options(run, ro->budgets, true);
+  run->add_option("--seed", ro->seed, "seed of the range sensor's noise (default 1)");
   run->add_option("--speed", ro->speed, "kinematic body speed, m/s (default 0.5)")
       ->check(CLI::Range(1e-3, 100.0));
   run->add_flag("--json", ro->json, "print a JSON summary");

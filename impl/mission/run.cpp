@@ -15,6 +15,7 @@
 #include "spec/mission/avoidance.hpp"
 #include "spec/mission/plan.hpp"
 #include "spec/mission/run.hpp"
+#include "spec/mission/sensing.hpp"
 #include "spec/mission/separation.hpp"
 #include "spec/mission/world.hpp"
 #include "swarmcheck/mission.hpp"
@@ -49,6 +50,8 @@ struct RobotSim {
   bool yielded = false;                 // kept its state: its move would overlap another robot
   std::size_t yielded_to = 0;           // ... the robot it yielded to
   std::optional<sm::IntervalRecord> interval;  // its activity so far
+  std::vector<char> map;                // with unknown obstacles: its own map, and its
+  std::vector<char> trav;               //   traversable cells on it
 };
 
 struct Proposal {
@@ -90,10 +93,16 @@ class Runner {
  public:
   Runner(const sm::Mission& m, const RunOptions& o, RunObserver* obs)
       : m_(m), o_(o), obs_(obs), planner_(m), state_(m.initial_state) {
-    for (const auto& r : m.robots) {
+    sensing_ = m.world && !m.world->hidden.empty();
+    if (sensing_) truth_ = sm::true_world(*m.world);
+    for (std::size_t i = 0; i < m.robots.size(); ++i) {
       RobotSim sim;
-      sim.pos = r.start;
-      robots_.push_back(sim);
+      sim.pos = m.robots[i].start;
+      if (sensing_) {
+        sim.map = m.world->occupied;
+        sim.trav = m.world->traversable[i];
+      }
+      robots_.push_back(std::move(sim));
     }
   }
 
@@ -121,7 +130,7 @@ class Runner {
       }
       const double before = t;
       t = static_cast<double>(k + 1) * o_.dt_s;
-      const bool progress = move(before, t);
+      const bool progress = move(before, t, static_cast<std::uint64_t>(k));
       check_apart(t);
       if (!progress) {
         result_.reason = deadlock_reason();
@@ -250,7 +259,7 @@ class Runner {
   }
 
   // One step of motion; false when nothing could move and no event fired (deadlock).
-  bool move(double before, double t) {
+  bool move(double before, double t, std::uint64_t step) {
     bool progress = false;
     std::vector<sm::Activity> did(robots_.size(), sm::Activity::waiting_for_task);
     for (std::size_t i = 0; i < robots_.size(); ++i) {
@@ -258,9 +267,10 @@ class Runner {
       r.blocked = false;
       r.yielded = false;
       if (r.queue.empty()) continue;
+      if (sensing_) sense(i, step);
       if (!r.driving && !r.following) start_leg(i);
       const Proposal p = propose(o_, rp_, r);
-      if (m_.world && sm::overlaps_obstacle(*m_.world, p.pos, m_.robots[i].radius))
+      if (m_.world && sm::overlaps_obstacle(sensing_ ? truth_ : *m_.world, p.pos, m_.robots[i].radius))
         throw std::logic_error(fmt::format("robot {} would overlap an obstacle at [{}, {}] at t = {} s",
                                            m_.robots[i].name, p.pos[0], p.pos[1], t));
       if (const auto j = sm::yields_to(m_, i, r.pos, p.pos, ways())) {
@@ -327,12 +337,23 @@ class Runner {
     if (!m_.world) return;
     // In a world the leg follows the A* route (a region's goal is the route's end); no route:
     // straight to the goal.
-    const auto& trav = m_.world->traversable[i];
+    const auto& trav = sensing_ ? r.trav : m_.world->traversable[i];
     const auto route = region ? sm::route_to_region(*m_.world, trav, r.pos, *region)
                               : sm::route_to_point(*m_.world, trav, r.pos, r.leg);
     if (!route) return;
     r.leg = route->waypoints.front();
     r.route.assign(route->waypoints.begin() + 1, route->waypoints.end());
+  }
+
+  // A scan (spec/mission/sensing.hpp); a cell new on robot i's map restarts its leg on it.
+  void sense(std::size_t i, std::uint64_t step) {
+    RobotSim& r = robots_[i];
+    if (!sm::add_to_map(r.map, sm::scan_cells(truth_, r.pos, o_.seed, step, i))) return;
+    r.trav = sm::traversable_on(*m_.world, r.map, m_.robots[i].radius);
+    ++result_.replans_sensed;
+    r.driving = false;
+    r.following = false;
+    r.route.clear();
   }
 
   // The region robot i must enter first by the plan, if it holds neither the task nor the robot.
@@ -432,6 +453,8 @@ class Runner {
   bool settled_ = false;  // the choice found nothing to issue, and no event fired since
   std::vector<RobotSim> robots_;
   std::vector<sm::Point> where_;  // the robots' positions, kept with RobotSim::pos
+  bool sensing_ = false;          // the world has unknown obstacles: robots scan and re-route
+  sm::GridWorld truth_;           // ... and the world as it is
   RunResult result_;
 };
 

@@ -14,6 +14,7 @@
 #include "spec/exploration/body.hpp"
 #include "spec/exploration/controller.hpp"
 #include "spec/mission/avoidance.hpp"
+#include "spec/mission/sensing.hpp"
 #include "spec/mission/separation.hpp"
 #include "spec/mission/world.hpp"
 #include "spec/util/demand.hpp"
@@ -43,6 +44,8 @@ struct Robot {
   bool yielded = false;             // kept its state: its move would overlap another robot
   std::size_t yielded_to = 0;       // ... the robot it yielded to
   std::optional<sm::IntervalRecord> open;  // its activity interval so far
+  std::vector<char> map;            // with unknown obstacles: its own map, and its traversable
+  std::vector<char> trav;           //   cells on it
 };
 
 // One robot's proposed step.
@@ -68,6 +71,8 @@ struct World {
   std::optional<std::vector<std::string>> current;  // P: the current plan's events not yet fired
   bool asked = false;               // the planner was asked at least once
   bool asked_since_event = false;   // ... since the last event fired
+  bool sensing = false;             // the world has unknown obstacles: robots scan and re-route
+  sm::GridWorld truth;              // ... and the world as it is
 };
 
 // Where robot i is for planning: the task it was sent to last, else its start.
@@ -249,7 +254,7 @@ void route_leg(World& w, std::size_t i, const sm::Region* g) {
   Robot& r = w.robots[i];
   r.route.clear();
   if (!w.m.world) return;
-  const auto& trav = w.m.world->traversable[i];
+  const auto& trav = w.sensing ? r.trav : w.m.world->traversable[i];
   const auto route = g ? sm::route_to_region(*w.m.world, trav, r.pos, *g)
                        : sm::route_to_point(*w.m.world, trav, r.pos, r.waypoint);
   if (!route) return;
@@ -321,8 +326,19 @@ void account(World& w, const std::vector<sm::Activity>& did, double t_from, doub
   }
 }
 
+// Scan (spec/mission/sensing.hpp): a cell new on robot i's map re-routes it from where it is.
+void sense(World& w, std::size_t i, std::uint64_t step) {
+  Robot& r = w.robots[i];
+  if (!sm::add_to_map(r.map, sm::scan_cells(w.truth, r.pos, w.o.seed, step, i))) return;
+  r.trav = sm::traversable_on(*w.m.world, r.map, w.m.robots[i].radius);
+  ++w.result.replans_sensed;
+  r.on_leg = false;
+  r.following = false;
+  r.route.clear();
+}
+
 // Rule 3 for every robot; false when no robot moved.
-bool move_all(World& w, double t_from, double t) {
+bool move_all(World& w, double t_from, double t, std::uint64_t step) {
   bool moved = false;
   std::vector<sm::Activity> did(w.robots.size(), sm::Activity::waiting_for_task);
   for (std::size_t i = 0; i < w.robots.size(); ++i) {
@@ -330,9 +346,10 @@ bool move_all(World& w, double t_from, double t) {
     r.blocked = false;
     r.yielded = false;
     if (r.tasks.empty()) continue;
+    if (w.sensing) sense(w, i, step);
     if (!r.on_leg && !r.following) start_leg(w, i);
     const Move mv = propose(w, r);
-    if (w.m.world && sm::overlaps_obstacle(*w.m.world, mv.pos, w.m.robots[i].radius))
+    if (w.m.world && sm::overlaps_obstacle(w.sensing ? w.truth : *w.m.world, mv.pos, w.m.robots[i].radius))
       throw std::logic_error(fmt::format("robot {} would overlap an obstacle at [{}, {}] at t = {} s",
                                          w.m.robots[i].name, mv.pos[0], mv.pos[1], t));
     if (const auto j = sm::yields_to(w.m, i, r.pos, mv.pos, ways(w))) {
@@ -397,9 +414,17 @@ std::string deadlock_reason(const World& w) {
 sm::RunResult run_model(const sm::Mission& m, const sm::RunOptions& o, const PlanFunction& plan,
                         sm::RunObserver* observer) {
   SWARM_DEMAND(o.dt_s > 0);
-  World w{m, o, plan, observer, m.initial_state, {}, {}, {}, {}, false, false};
+  World w{m, o, plan, observer, m.initial_state, {}, {}, {}, {}, false, false, false, {}};
   w.robots.resize(m.robots.size());
   for (std::size_t i = 0; i < m.robots.size(); ++i) w.robots[i].pos = m.robots[i].start;
+  w.sensing = m.world && !m.world->hidden.empty();
+  if (w.sensing) {
+    w.truth = sm::true_world(*m.world);
+    for (std::size_t i = 0; i < m.robots.size(); ++i) {
+      w.robots[i].map = m.world->occupied;
+      w.robots[i].trav = m.world->traversable[i];
+    }
+  }
   for (const auto& e : sm::initial_entries(m)) fire(w, e, 0.0);
   const sm::Plan first = ask(w);
   w.result.makespan_planned = first.found ? first.cost.makespan : 0.0;
@@ -422,7 +447,7 @@ sm::RunResult run_model(const sm::Mission& m, const sm::RunOptions& o, const Pla
     }
     const double t_from = t;
     t = static_cast<double>(k + 1) * o.dt_s;
-    const bool moved = move_all(w, t_from, t);
+    const bool moved = move_all(w, t_from, t, static_cast<std::uint64_t>(k));
     check_apart(w, t);
     if (!moved) {
       w.result.reason = deadlock_reason(w);

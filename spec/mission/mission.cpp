@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <initializer_list>
+#include <utility>
 
 #include "spec/util/hana_json.hpp"
 #include "spec/util/json_text.hpp"
@@ -56,9 +57,14 @@ MissionDecl decl_from_json(const Json& j) {
     require_keys(j["world"], "world",
                  {{"resolution_m", "the side of a grid cell in metres"},
                   {"origin", "the grid's lower-left corner [x, y]"}});
-  if (j.contains("world") && j["world"].contains("obstacles"))
-    require_each(j["world"], "obstacles", "world.obstacles",
-                 {{"polygon", "its corners in order [[x, y], ...]"}});
+  for (const char* list : {"obstacles", "unknown_obstacles"})
+    if (j.contains("world") && j["world"].contains(list))
+      require_each(j["world"], list, std::string("world.") + list,
+                   {{"polygon", "its corners in order [[x, y], ...]"}});
+  if (j.contains("world") && j["world"].contains("sensor"))
+    require_keys(j["world"]["sensor"], "world.sensor",
+                 {{"beams", "the number of beams"}, {"range_m", "the range in metres"},
+                  {"noise_m", "the readings' standard deviation in metres"}});
   MissionDecl d;
   Json rest = j;
   rest.erase("events");
@@ -89,11 +95,14 @@ MissionDecl decl_from_json(const Json& j) {
   for (std::size_t i = 0; i < d.tasks.size(); ++i)
     require_finite(d.tasks[i].at, json_io::join_index("tasks", i) + ".at");
   if (d.world) require_finite(d.world->origin, "world.origin");
-  if (d.world && d.world->obstacles)
-    for (std::size_t k = 0; k < d.world->obstacles->size(); ++k)
-      for (std::size_t i = 0; i < (*d.world->obstacles)[k].polygon.size(); ++i)
-        require_finite((*d.world->obstacles)[k].polygon[i],
-                       json_io::join_index(json_io::join_index("world.obstacles", k) + ".polygon", i));
+  if (d.world)
+    for (const auto& [list, name] : {std::pair{&d.world->obstacles, "world.obstacles"},
+                                     std::pair{&d.world->unknown_obstacles, "world.unknown_obstacles"}})
+      if (*list)
+        for (std::size_t k = 0; k < (*list)->size(); ++k)
+          for (std::size_t i = 0; i < (**list)[k].polygon.size(); ++i)
+            require_finite((**list)[k].polygon[i],
+                           json_io::join_index(json_io::join_index(name, k) + ".polygon", i));
   for (std::size_t i = 0; i < d.regions.size(); ++i)
     for (std::size_t k = 0; k < 2; ++k)
       require_finite(d.regions[i].corners[k],

@@ -46,15 +46,25 @@ struct RegionDecl {
 struct ObstacleDecl {
   BOOST_HANA_DEFINE_STRUCT(ObstacleDecl, (std::vector<Point>, polygon));
 };
+// The robots' range sensor (spec/mission/sensing.hpp).
+struct SensorDecl {
+  BOOST_HANA_DEFINE_STRUCT(SensorDecl,
+      (std::size_t, beams),
+      (double, range_m),
+      (double, noise_m));
+};
 // The occupancy grid (spec/mission/world.hpp): '#' occupied, '.' free, first row on top; or a
-// free grid of size_m; either with polygon obstacles rasterised onto it.
+// free grid of size_m; either with polygon obstacles rasterised onto it. unknown_obstacles are
+// in the world but not on the robots' map (spec/mission/sensing.hpp).
 struct WorldDecl {
   BOOST_HANA_DEFINE_STRUCT(WorldDecl,
       (double, resolution_m),
       (Point, origin),                     // the grid's lower-left corner
       (std::optional<std::vector<std::string>>, rows),
       (std::optional<Point>, size_m),      // [width, height]: when there are no rows
-      (std::optional<std::vector<ObstacleDecl>>, obstacles));
+      (std::optional<std::vector<ObstacleDecl>>, obstacles),
+      (std::optional<std::vector<ObstacleDecl>>, unknown_obstacles),
+      (std::optional<SensorDecl>, sensor));
 };
 struct MeaningDecl {
   BOOST_HANA_DEFINE_STRUCT(MeaningDecl,
@@ -103,6 +113,13 @@ struct GridWorld {
   std::size_t rows = 0, cols = 0;  // both > 0
   std::vector<char> occupied;      // row-major, row 0 on top
   std::vector<std::vector<Point>> polygons;    // the obstacles rasterised into `occupied`
+  // Unknown obstacles (spec/mission/sensing.hpp): cells occupied in the world but not on the
+  // map `occupied` (empty: none), and their polygons; the robots' range sensor.
+  std::vector<char> hidden;
+  std::vector<std::vector<Point>> unknown_polygons;
+  std::size_t sensor_beams = 64;
+  double sensor_range_m = 3.0;
+  double sensor_noise_m = 0.0;
   std::vector<std::vector<char>> traversable;  // per robot, traversable_cells for its radius
 };
 

@@ -82,6 +82,7 @@
 #include <array>
 #include <boost/hana.hpp>
 #include <cstddef>
+#include <cstdint>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -101,8 +102,10 @@ struct RunOptions {
       (BodyModel, body),
       (double, dt_s),
       (double, max_time_s),
-      (double, speed_m_per_s));   // kinematic body only
-  RunOptions() : body(BodyModel::unicycle), dt_s(0.05), max_time_s(3600.0), speed_m_per_s(0.5) {}
+      (double, speed_m_per_s),    // kinematic body only
+      (std::uint64_t, seed));     // the range sensor's noise (spec/mission/sensing.hpp)
+  RunOptions()
+      : body(BodyModel::unicycle), dt_s(0.05), max_time_s(3600.0), speed_m_per_s(0.5), seed(1) {}
 };
 
 struct EventRecord {
@@ -155,10 +158,11 @@ struct RunResult {
       (std::size_t, plan_cache_hits),
       (std::vector<IntervalRecord>, intervals),   // in the order they closed
       (std::size_t, yields),             // robot-steps a robot yielded to another (rule 3)
+      (std::size_t, replans_sensed),     // legs re-routed on a map the sensor changed
       (double, clearance_min_m));        // least clearance_m of the step records (>= 0)
   RunResult()
       : completed(false), time_s(0.0), makespan_planned(0.0), replans(0), plan_cache_hits(0),
-        yields(0), clearance_min_m(0.0) {}
+        yields(0), replans_sensed(0), clearance_min_m(0.0) {}
 };
 
 }  // namespace swarmcheck::mission

@@ -12,6 +12,7 @@
 #include <utility>
 
 #include "spec/mission/polygon.hpp"
+#include "spec/mission/sensing.hpp"
 #include "spec/util/input_error.hpp"
 
 namespace swarmcheck::mission {
@@ -267,19 +268,36 @@ GridWorld grid_of_size(const Point& size_m, double res) {
   return w;
 }
 
-void add_polygons(GridWorld& w, const std::vector<ObstacleDecl>& obstacles) {
+// Rasterises the polygons of `list` ("obstacles" or "unknown_obstacles") onto `cells`.
+void add_polygons(const GridWorld& w, const std::vector<ObstacleDecl>& obstacles, const char* list,
+                  std::vector<char>& cells_out, std::vector<std::vector<Point>>& polygons_out) {
   for (std::size_t k = 0; k < obstacles.size(); ++k) {
     const auto& poly = obstacles[k].polygon;
-    const std::string path = fmt::format("world.obstacles[{}].polygon", k);
+    const std::string path = fmt::format("world.{}[{}].polygon", list, k);
     if (poly.size() < 3)
       throw InputError(path, fmt::format("expected a polygon of at least 3 points [x, y]; got {}",
                                          poly.size()));
     if (polygon_area2(poly) == 0.0)
       throw InputError(path, "expected a polygon of non-zero area; its points are on one line");
     const std::vector<char> cells = polygon_cells(w, poly);
-    for (std::size_t c = 0; c < cells.size(); ++c) w.occupied[c] = w.occupied[c] || cells[c];
-    w.polygons.push_back(poly);
+    for (std::size_t c = 0; c < cells.size(); ++c) cells_out[c] = cells_out[c] || cells[c];
+    polygons_out.push_back(poly);
   }
+}
+
+void set_sensor(GridWorld& w, const SensorDecl& s) {
+  if (s.beams < 1 || s.beams > 4096)
+    throw InputError("world.sensor.beams", fmt::format("expected 1 to 4096 beams; got {}", s.beams));
+  if (!std::isfinite(s.range_m) || s.range_m <= 0.0 || s.range_m > 1000.0)
+    throw InputError("world.sensor.range_m",
+                     fmt::format("expected a range in metres, > 0 and at most 1000; got {}", s.range_m));
+  if (!std::isfinite(s.noise_m) || s.noise_m < 0.0 || s.noise_m > s.range_m)
+    throw InputError("world.sensor.noise_m",
+                     fmt::format("expected a standard deviation in metres, >= 0 and at most the "
+                                 "range; got {}", s.noise_m));
+  w.sensor_beams = s.beams;
+  w.sensor_range_m = s.range_m;
+  w.sensor_noise_m = s.noise_m;
 }
 
 }  // namespace
@@ -297,7 +315,13 @@ GridWorld build_world(const WorldDecl& d) {
   GridWorld w = d.rows ? grid_of_rows(*d.rows) : grid_of_size(*d.size_m, d.resolution_m);
   w.resolution_m = d.resolution_m;
   w.origin = d.origin;
-  if (d.obstacles) add_polygons(w, *d.obstacles);
+  if (d.obstacles) add_polygons(w, *d.obstacles, "obstacles", w.occupied, w.polygons);
+  if (d.unknown_obstacles) {
+    w.hidden.assign(w.occupied.size(), 0);
+    add_polygons(w, *d.unknown_obstacles, "unknown_obstacles", w.hidden, w.unknown_polygons);
+    for (std::size_t c = 0; c < w.hidden.size(); ++c) w.hidden[c] = w.hidden[c] && !w.occupied[c];
+  }
+  if (d.sensor) set_sensor(w, *d.sensor);
   return w;
 }
 
@@ -334,6 +358,24 @@ void check_polygons_clear(const Mission& m, const std::vector<std::set<std::size
   }
 }
 
+// Starts and tasks must be clear of the unknown obstacles too (nothing could complete there).
+void check_clear_of_unknown(const Mission& m, const std::vector<std::set<std::size_t>>& tasks) {
+  const GridWorld truth = true_world(*m.world);
+  for (std::size_t r = 0; r < m.robots.size(); ++r) {
+    const Robot& robot = m.robots[r];
+    if (overlaps_obstacle(truth, robot.start, robot.radius))
+      throw InputError(fmt::format("robots[{}].start", r),
+                       fmt::format("robot {} (radius {} m) at {} overlaps an unknown obstacle",
+                                   robot.name, robot.radius, point_text(robot.start)));
+    for (const std::size_t t : tasks[r])
+      if (overlaps_obstacle(truth, m.tasks[t].at, robot.radius))
+        throw InputError(fmt::format("tasks[{}].at", t),
+                         fmt::format("an unknown obstacle covers task {} at {} for robot {} "
+                                     "(radius {} m)", m.tasks[t].name, point_text(m.tasks[t].at),
+                                     robot.name, robot.radius));
+  }
+}
+
 }  // namespace
 
 void check_world(const Mission& m) {
@@ -344,6 +386,7 @@ void check_world(const Mission& m) {
   for (const auto& [name, mn] : m.events)
     (mn.kind == MeaningKind::task_start ? tasks : regions)[mn.robot].insert(mn.target);
   check_polygons_clear(m, tasks);
+  if (!w.hidden.empty()) check_clear_of_unknown(m, tasks);
   for (std::size_t r = 0; r < m.robots.size(); ++r)
     if (overlaps_obstacle(w, m.robots[r].start, m.robots[r].radius))
       throw InputError(fmt::format("robots[{}].start", r),

@@ -5,6 +5,7 @@
 // overlap (distance < sum of radii, spec/mission/separation.hpp); the trace
 // ends at a marked state. Returns "" when all hold, else the first broken rule.
 #include <algorithm>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -12,6 +13,7 @@
 #include "impl/mission/trace.hpp"
 #include "spec/mission/avoidance.hpp"
 #include "spec/mission/plan.hpp"
+#include "spec/mission/sensing.hpp"
 #include "spec/mission/world.hpp"
 #include "swarmcheck/mission.hpp"
 
@@ -39,6 +41,10 @@ inline std::string replay(const swarmcheck::mission::Mission& m,
   std::string state = t.initial_state;
   std::vector<std::string> fired;  // events since the previous step record
   const sm::StepRecord* prev = nullptr;
+  // Unknown obstacles are walls too (spec/mission/sensing.hpp): positions are checked against
+  // the world as it is, not the map.
+  const std::optional<sm::GridWorld> walls =
+      m.world ? std::optional<sm::GridWorld>(sm::true_world(*m.world)) : std::nullopt;
   for (const auto& e : t.entries) {
     if (e.is_event) {
       const auto next = swarmcheck::supervisor::successor(m.fsm, state, e.event.event);
@@ -54,7 +60,7 @@ inline std::string replay(const swarmcheck::mission::Mission& m,
       const sm::Point before = prev ? prev->positions[r] : m.robots[r].start;
       for (const auto& ev : sm::entry_events(m, r, before, e.step.positions[r]))
         entries.push_back(ev);
-      if (m.world && sm::overlaps_obstacle(*m.world, e.step.positions[r], m.robots[r].radius))
+      if (walls && sm::overlaps_obstacle(*walls, e.step.positions[r], m.robots[r].radius))
         return "robot " + m.robots[r].name + " overlaps an obstacle at t=" + std::to_string(e.step.time_s);
       for (std::size_t o = 0; o < r; ++o)
         if (sm::distance(e.step.positions[r], e.step.positions[o]) < m.robots[r].radius + m.robots[o].radius)
