@@ -267,10 +267,16 @@ class Runner {
       r.blocked = false;
       r.yielded = false;
       if (r.queue.empty()) continue;
-      if (sensing_) sense(i, step);
+      if (sensing_) learn(i, sm::scan_cells(truth_, r.pos, o_.seed, step, i));
       if (!r.driving && !r.following) start_leg(i);
       const Proposal p = propose(o_, rp_, r);
-      if (m_.world && sm::overlaps_obstacle(sensing_ ? truth_ : *m_.world, p.pos, m_.robots[i].radius))
+      if (sensing_ && sm::overlaps_obstacle(truth_, p.pos, m_.robots[i].radius)) {  // a bump
+        ++result_.bumps;
+        did[i] = sm::Activity::busy;
+        progress = learn(i, sm::overlapped_cells(truth_, p.pos, m_.robots[i].radius)) || progress;
+        continue;
+      }
+      if (m_.world && sm::overlaps_obstacle(*m_.world, p.pos, m_.robots[i].radius))
         throw std::logic_error(fmt::format("robot {} would overlap an obstacle at [{}, {}] at t = {} s",
                                            m_.robots[i].name, p.pos[0], p.pos[1], t));
       if (const auto j = sm::yields_to(m_, i, r.pos, p.pos, ways())) {
@@ -345,15 +351,17 @@ class Runner {
     r.route.assign(route->waypoints.begin() + 1, route->waypoints.end());
   }
 
-  // A scan (spec/mission/sensing.hpp); a cell new on robot i's map restarts its leg on it.
-  void sense(std::size_t i, std::uint64_t step) {
+  // Cells new on robot i's map (spec/mission/sensing.hpp) restart its leg on it; false when
+  // none was new.
+  bool learn(std::size_t i, const std::vector<std::size_t>& cells) {
     RobotSim& r = robots_[i];
-    if (!sm::add_to_map(r.map, sm::scan_cells(truth_, r.pos, o_.seed, step, i))) return;
+    if (!sm::add_to_map(r.map, cells)) return false;
     r.trav = sm::traversable_on(*m_.world, r.map, m_.robots[i].radius);
     ++result_.replans_sensed;
     r.driving = false;
     r.following = false;
     r.route.clear();
+    return true;
   }
 
   // The region robot i must enter first by the plan, if it holds neither the task nor the robot.

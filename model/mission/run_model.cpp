@@ -326,15 +326,17 @@ void account(World& w, const std::vector<sm::Activity>& did, double t_from, doub
   }
 }
 
-// Scan (spec/mission/sensing.hpp): a cell new on robot i's map re-routes it from where it is.
-void sense(World& w, std::size_t i, std::uint64_t step) {
+// Cells new on robot i's map (spec/mission/sensing.hpp) re-route it from where it is; false
+// when none was new.
+bool learn(World& w, std::size_t i, const std::vector<std::size_t>& cells) {
   Robot& r = w.robots[i];
-  if (!sm::add_to_map(r.map, sm::scan_cells(w.truth, r.pos, w.o.seed, step, i))) return;
+  if (!sm::add_to_map(r.map, cells)) return false;
   r.trav = sm::traversable_on(*w.m.world, r.map, w.m.robots[i].radius);
   ++w.result.replans_sensed;
   r.on_leg = false;
   r.following = false;
   r.route.clear();
+  return true;
 }
 
 // Rule 3 for every robot; false when no robot moved.
@@ -346,10 +348,16 @@ bool move_all(World& w, double t_from, double t, std::uint64_t step) {
     r.blocked = false;
     r.yielded = false;
     if (r.tasks.empty()) continue;
-    if (w.sensing) sense(w, i, step);
+    if (w.sensing) learn(w, i, sm::scan_cells(w.truth, r.pos, w.o.seed, step, i));
     if (!r.on_leg && !r.following) start_leg(w, i);
     const Move mv = propose(w, r);
-    if (w.m.world && sm::overlaps_obstacle(w.sensing ? w.truth : *w.m.world, mv.pos, w.m.robots[i].radius))
+    if (w.sensing && sm::overlaps_obstacle(w.truth, mv.pos, w.m.robots[i].radius)) {  // a bump
+      ++w.result.bumps;
+      did[i] = sm::Activity::busy;
+      moved = learn(w, i, sm::overlapped_cells(w.truth, mv.pos, w.m.robots[i].radius)) || moved;
+      continue;
+    }
+    if (w.m.world && sm::overlaps_obstacle(*w.m.world, mv.pos, w.m.robots[i].radius))
       throw std::logic_error(fmt::format("robot {} would overlap an obstacle at [{}, {}] at t = {} s",
                                          w.m.robots[i].name, mv.pos[0], mv.pos[1], t));
     if (const auto j = sm::yields_to(w.m, i, r.pos, mv.pos, ways(w))) {

@@ -16,7 +16,9 @@
 // p + reading (cos, sin) (when in the grid) on the robot's own map.
 // When a scan adds a cell to a robot's map, the robot's traversable cells are recomputed on its
 // map and its leg restarts from where it is (rule 3's leg start, routes on its own map):
-// replans_sensed counts these.
+// replans_sensed counts these. A proposal overlapping the world (map or hidden) is a bump: the
+// robot keeps its state for the step, the cells its disk would overlap go on its map (the same
+// re-routing when one is new), and bumps counts it.
 #include <cstddef>
 #include <cstdint>
 #include <vector>

@@ -135,13 +135,17 @@ bool leaves_grid(const GridWorld& w, const Point& p, double radius_m) {
 }
 
 bool overlaps_obstacle(const GridWorld& w, const Point& p, double radius_m) {
+  return leaves_grid(w, p, radius_m) || !overlapped_cells(w, p, radius_m).empty();
+}
+
+std::vector<std::size_t> overlapped_cells(const GridWorld& w, const Point& p, double radius_m) {
   const double res = w.resolution_m;
-  if (leaves_grid(w, p, radius_m)) return true;
   const auto index = [&](double v, double o) { return static_cast<Index>(std::floor((v - o) / res)); };
   const Index j0 = std::max(Index{0}, index(p[0] - radius_m, w.origin[0]) - 1);
   const Index j1 = std::min(cols_of(w) - 1, index(p[0] + radius_m, w.origin[0]) + 1);
   const Index k0 = std::max(Index{0}, index(p[1] - radius_m, w.origin[1]) - 1);
   const Index k1 = std::min(rows_of(w) - 1, index(p[1] + radius_m, w.origin[1]) + 1);
+  std::vector<std::size_t> out;
   for (Index k = k0; k <= k1; ++k)
     for (Index j = j0; j <= j1; ++j) {
       const Index i = rows_of(w) - 1 - k;
@@ -150,10 +154,11 @@ bool overlaps_obstacle(const GridWorld& w, const Point& p, double radius_m) {
       const Point hi{lo[0] + res, lo[1] + res};
       const double dx = std::max({lo[0] - p[0], 0.0, p[0] - hi[0]});
       const double dy = std::max({lo[1] - p[1], 0.0, p[1] - hi[1]});
-      if (dx * dx + dy * dy < radius_m * radius_m) return true;
-      if (lo[0] < p[0] && p[0] < hi[0] && lo[1] < p[1] && p[1] < hi[1]) return true;
+      if (dx * dx + dy * dy < radius_m * radius_m ||
+          (lo[0] < p[0] && p[0] < hi[0] && lo[1] < p[1] && p[1] < hi[1]))
+        out.push_back(at(w, i, j));
     }
-  return false;
+  return out;
 }
 
 double traversable_checks(const GridWorld& w, double radius_m) {

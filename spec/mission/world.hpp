@@ -45,6 +45,8 @@ std::optional<std::size_t> cell_of(const GridWorld& w, const Point& p);
 Point cell_centre(const GridWorld& w, std::size_t cell);
 
 bool overlaps_obstacle(const GridWorld& w, const Point& p, double radius_m);
+// The occupied cells the disk overlaps (the second part of overlaps_obstacle), bottom row first.
+std::vector<std::size_t> overlapped_cells(const GridWorld& w, const Point& p, double radius_m);
 // The disk leaves the grid's rectangle (the first part of overlaps_obstacle).
 bool leaves_grid(const GridWorld& w, const Point& p, double radius_m);
 

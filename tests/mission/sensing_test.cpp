@@ -93,6 +93,7 @@ void unknown_wall_run(sm::BodyModel body) {
   ASSERT_TRUE(r.completed) << r.reason;
   EXPECT_EQ(r.makespan_planned, 8.0);  // the plan knows no wall: straight to t1
   EXPECT_GT(r.replans_sensed, 0u);     // A met the wall and re-routed
+  EXPECT_EQ(r.bumps, 0u);              // seen in time: never held back by touching it
   EXPECT_GT(r.travel[0], 9.5);         // around it
   EXPECT_EQ(swarmcheck::test::replay(m, t), "");  // never on the unknown wall, nor on B
   EXPECT_EQ(swarmcheck::conformance::mission::diff_run(m, o).value_or(""), "");

@@ -219,9 +219,10 @@ TEST(MissionWorld, WalledMissionCompletesWithoutCollisionAndModelAgreesUnicycle)
 
 // The differential in a world: run_case's missions (integer points, either body) in a grid of
 // 0.5 m cells 3 m around them with up to three walls (bars of cells) and radii of 0..0.2 m; the
-// cases the world's checks reject are discarded. The library and the model agree record for
-// record (an overlap would throw in both, and fail the property).
-RC_GTEST_PROP(MissionWorld, ImplRunEqualsModelRunOnGeneratedWalledMissions, ()) {
+// cases the world's checks reject are discarded. With `unknown`, each bar is unknown (hidden
+// from the map, for the sensor to find: spec/mission/sensing.hpp) with probability 1/2, and the
+// sensor has 64 beams of 3 m with 0.02 m of noise.
+cm::RunCase walled_case(bool unknown) {
   cm::RunCase c = *cm::run_case();
   sm::Mission& m = c.mission;
   double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300;
@@ -235,15 +236,25 @@ RC_GTEST_PROP(MissionWorld, ImplRunEqualsModelRunOnGeneratedWalledMissions, ()) 
   const auto cols = static_cast<std::size_t>((x1 - x0 + 6) / res);
   const auto rows = static_cast<std::size_t>((y1 - y0 + 6) / res);
   std::vector<std::string> text(rows, std::string(cols, '.'));
+  std::vector<char> hidden(rows * cols, 0);
   for (int k = *rc::gen::inRange(0, 4); k > 0; --k) {
     const bool across = *rc::gen::arbitrary<bool>();
+    const bool hide = unknown && *rc::gen::arbitrary<bool>();
     const auto i = *rc::gen::inRange<std::size_t>(0, rows), j = *rc::gen::inRange<std::size_t>(0, cols);
     const auto len = *rc::gen::inRange<std::size_t>(2, (across ? cols : rows) / 2 + 3);
-    for (std::size_t n = 0; n < len; ++n)
-      if (across && j + n < cols) text[i][j + n] = '#';
-      else if (!across && i + n < rows) text[i + n][j] = '#';
+    for (std::size_t n = 0; n < len; ++n) {
+      const std::size_t a = across ? i : i + n, b = across ? j + n : j;
+      if (a >= rows || b >= cols) continue;
+      if (hide) hidden[a * cols + b] = 1;
+      else text[a][b] = '#';
+    }
   }
   m.world = grid(res, {x0 - 3, y0 - 3}, text);
+  if (unknown) {
+    for (std::size_t cell = 0; cell < hidden.size(); ++cell) hidden[cell] = hidden[cell] && !m.world->occupied[cell];
+    m.world->hidden = hidden;
+    m.world->sensor_noise_m = 0.02;
+  }
   for (auto& r : m.robots) {
     r.radius = *rc::gen::element(0.0, 0.1, 0.2);
     m.world->traversable.push_back(sm::traversable_cells(*m.world, r.radius));
@@ -254,6 +265,12 @@ RC_GTEST_PROP(MissionWorld, ImplRunEqualsModelRunOnGeneratedWalledMissions, ()) 
   } catch (const swarmcheck::InputError&) {
     RC_DISCARD("the world's checks reject it");
   }
+  return c;
+}
+
+RC_GTEST_PROP(MissionWorld, ImplRunEqualsModelRunOnGeneratedWalledMissions, ()) {
+  const cm::RunCase c = walled_case(false);
+  const sm::Mission& m = c.mission;
   bool detour = false;  // some robot's route to some task is 10 % longer than the straight line
   for (std::size_t r = 0; r < m.robots.size(); ++r)
     for (const auto& t : m.tasks)
@@ -263,6 +280,18 @@ RC_GTEST_PROP(MissionWorld, ImplRunEqualsModelRunOnGeneratedWalledMissions, ()) 
   RC_TAG(swarmcheck::json_io::enum_to_string(c.options.body),
          sm::run_mission(m, c.options).reason.substr(0, 8));
   const auto d = cm::diff_run(m, c.options);
+  RC_ASSERT(d.value_or("") == std::string());
+}
+
+// The same with unknown walls: the robots scan, re-route on what they sensed (or bumped into),
+// and never overlap a wall (the runners would throw); the library and the model agree record for
+// record.
+RC_GTEST_PROP(MissionWorld, ImplRunEqualsModelRunAndNoRobotTouchesAnUnknownWallOnGeneratedMissions, ()) {
+  const cm::RunCase c = walled_case(true);
+  const sm::RunResult r = sm::run_mission(c.mission, c.options);
+  RC_TAG(r.replans_sensed > 0 ? "re-routed on sensed cells" : "sensed nothing new",
+         r.bumps > 0 ? "bumped" : "no bump", r.completed ? "complete" : r.reason.substr(0, 8));
+  const auto d = cm::diff_run(c.mission, c.options);
   RC_ASSERT(d.value_or("") == std::string());
 }
 
