@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "conformance/mission/differential.hpp"
 #include "impl/mission/trace.hpp"
 #include "spec/mission/avoidance.hpp"
 #include "spec/mission/plan.hpp"
@@ -75,6 +76,14 @@ inline std::string replay(const swarmcheck::mission::Mission& m,
     prev = &e.step;
   }
   return sm::is_marked(m, state) ? "" : "the trace does not end at a marked state";
+}
+
+// What is wrong with a traced run that should be clean: it did not complete, its trace does not
+// replay (replay above), or the model's run differs from it; "" when nothing is.
+inline std::string unclean(const swarmcheck::mission::Mission& m, const TracedRun& run) {
+  if (!run.result.completed) return "not completed: " + run.result.reason;
+  if (auto why = replay(m, run.trace); !why.empty()) return why;
+  return swarmcheck::conformance::mission::diff_run(m, run.options).value_or("");
 }
 
 }  // namespace swarmcheck::test

@@ -191,8 +191,7 @@ void walls_run(sm::BodyModel body) {
   const auto m = sm::load_mission(kWalls);
   const auto run = swarmcheck::test::run_traced(m, body);
   const auto& [o, r, t] = run;
-  ASSERT_TRUE(r.completed) << r.reason;
-  EXPECT_EQ(swarmcheck::test::replay(m, t), "");  // events enabled, no robot on a wall
+  ASSERT_EQ(swarmcheck::test::unclean(m, run), "");  // events enabled, no robot on a wall
   std::size_t steps = 0;
   for (const auto& e : t.entries) {
     if (e.is_event) continue;
@@ -206,7 +205,6 @@ void walls_run(sm::BodyModel body) {
   EXPECT_GT(steps, 100u);
   for (std::size_t k = 0; k < m.robots.size(); ++k)  // every robot drove around a wall
     EXPECT_GT(r.travel[k], 4.0) << m.robots[k].name;
-  EXPECT_EQ(swarmcheck::conformance::mission::diff_run(m, o).value_or(""), "");
 }
 
 TEST(MissionWorld, WalledMissionCompletesWithoutCollisionAndModelAgreesKinematic) {
