@@ -7,6 +7,7 @@
 #include <memory>
 
 #include "apps/swarmcheck/fmu_verb.hpp"
+#include "apps/swarmcheck/stop_request.hpp"
 #include "apps/swarmcheck/verb.hpp"
 #include "fmi/master/handshake_monitor.hpp"
 #include "fmi/master/master.hpp"
@@ -37,6 +38,9 @@ int cosim(const CosimOptions& o) {
   std::vector<std::string> inputs{o.multimodel, o.config};
   for (const auto& [key, file] : mm.fmus) inputs.push_back(file);
   io::refuse_output_that_is_an_input(o.output, inputs);
+  // Ctrl-C / SIGTERM stop between steps, so the FMU instances are freed and their unpacked
+  // folders removed (the Master's destructor) before the process exits 130 / 143.
+  const StopRequest stop("\nswarmcheck cosim: interrupted: unloading the FMUs (Ctrl-C again to stop now)\n");
   fm::Master master(mm, config, o.algorithm == "gauss-seidel" ? fm::Algorithm::gauss_seidel : fm::Algorithm::jacobi);
   fm::HandshakeMonitor monitor(master);
   std::unique_ptr<io::AtomicFile> csv;
@@ -55,6 +59,11 @@ int cosim(const CosimOptions& o) {
     if (master.model_name_of(in) == "swarmcheck Environment") eP = master.port(in + ".eP");
   std::optional<int64_t> complete_at;
   while (!master.done()) {
+    if (stop.requested()) {
+      fmt::print(stderr, "swarmcheck cosim: interrupted at t = {} s after {} steps; FMUs unloaded, {}\n",
+                 master.time_s(), master.steps(), o.output.empty() ? "nothing written" : o.output + " left as it was");
+      return stop.exit_status();
+    }
     master.step();
     monitor.after_step(master);
     if (eP && !complete_at && master.value(*eP) >= 100) complete_at = master.steps();

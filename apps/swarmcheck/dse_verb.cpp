@@ -15,6 +15,7 @@
 #include <thread>
 
 #include "apps/swarmcheck/mpi_pool.hpp"
+#include "apps/swarmcheck/stop_request.hpp"
 #include "apps/swarmcheck/verb.hpp"
 #include "impl/dse/format.hpp"
 #include "impl/dse/report_html.hpp"
@@ -39,32 +40,10 @@ struct DseArgs {
   bool json = false;
 };
 
-// SIGINT: finish the points in flight, keep them in the journal, exit 130. A second Ctrl-C
-// (the handler resets itself) ends the process at once; the journal stays consistent.
-std::atomic<bool> g_interrupted{false};
-
-extern "C" void on_sigint(int) {
-  g_interrupted.store(true);
-  const char msg[] = "\nswarmcheck dse: interrupted: finishing the points in flight (Ctrl-C again to stop now)\n";
-  const ssize_t ignored = ::write(2, msg, sizeof msg - 1);
-  (void)ignored;
-}
-
-class SigintGuard {
- public:
-  SigintGuard() {
-    g_interrupted.store(false);
-    struct sigaction sa {};
-    sa.sa_handler = on_sigint;
-    sa.sa_flags = SA_RESETHAND;
-    sigemptyset(&sa.sa_mask);
-    sigaction(SIGINT, &sa, &old_);
-  }
-  ~SigintGuard() { sigaction(SIGINT, &old_, nullptr); }
-
- private:
-  struct sigaction old_ {};
-};
+// SIGINT / SIGTERM: finish the points in flight, keep them in the journal, exit 130 / 143. A second
+// one ends the process at once; the journal stays consistent.
+constexpr const char* kDseStopMessage =
+    "\nswarmcheck dse: interrupted: finishing the points in flight (Ctrl-C again to stop now)\n";
 
 // A progress bar with ETA on stderr, only when stderr is a terminal.
 class ProgressBar {
@@ -99,12 +78,16 @@ class ProgressBar {
 // Design points on the other MPI ranks: a genome out, the point's runs (JSON) back.
 class MpiExecutor : public Executor {
  public:
+  explicit MpiExecutor(const std::atomic<bool>& stop) : stop_(stop) {}
   void evaluate(const std::vector<Genome>& batch, const std::function<void(std::size_t, PointRuns)>& done) override {
     std::vector<std::string> tasks;
     for (const Genome& g : batch) tasks.push_back(json_io::Json(g).dump());
     mpi::distribute(tasks, [&](std::size_t i, std::string reply) { done(i, point_runs_from_json(json_io::Json::parse(reply))); },
-                    [](std::size_t) { return g_interrupted.load(); });
+                    [this](std::size_t) { return stop_.load(); });
   }
+
+ private:
+  const std::atomic<bool>& stop_;
 };
 
 void write_outputs(const std::string& dir, const DesignSpace& space, const DseResults& r, const ResultsContext& ctx) {
@@ -189,12 +172,13 @@ Plan load_plan(const DseArgs& a) {
   return p;
 }
 
-int run_rank0(const DseArgs& a, const DesignSpace& space, Executor& executor, const std::string& workers) {
+int run_rank0(const DseArgs& a, const DesignSpace& space, Executor& executor, const std::string& workers,
+              const StopRequest& stop) {
   std::error_code ec;
   fs::create_directories(a.out_dir, ec);
   if (ec) throw InputError(a.out_dir, "cannot create the output folder: " + ec.message());
   ProgressBar bar(space.config().algorithm == Algorithm::genetic);
-  SweepOptions options{(fs::path(a.out_dir) / "journal.jsonl").string(), &g_interrupted,
+  SweepOptions options{(fs::path(a.out_dir) / "journal.jsonl").string(), &stop.flag(),
                        [&bar](const SweepProgress& p) { bar.update(p); }};
   const auto start = Clock::now();
   const SweepOutcome outcome = run_sweep(space, executor, options);
@@ -203,7 +187,7 @@ int run_rank0(const DseArgs& a, const DesignSpace& space, Executor& executor, co
   if (outcome.interrupted) {
     fmt::print(stderr, "swarmcheck dse: interrupted after {} new points ({} runs); they are in {}. Run the same command "
                        "again to finish the sweep.\n", outcome.computed, outcome.runs, options.journal_path);
-    return 130;
+    return stop.exit_status();
   }
   DseResults results = rank_outcomes(space, outcome.points);
   results.generations = outcome.generations;
@@ -220,10 +204,10 @@ int dse_threads(const DseArgs& a) {
   const Plan plan = load_plan(a);
   const DesignSpace space(plan.config, plan.base);
   check_design_space(space);
-  const SigintGuard guard;
-  ThreadExecutor executor(space, needed_columns(plan.config), a.threads, &g_interrupted);
+  const StopRequest stop(kDseStopMessage);
+  ThreadExecutor executor(space, needed_columns(plan.config), a.threads, &stop.flag());
   const int32_t threads = a.threads > 0 ? a.threads : static_cast<int32_t>(std::max(1u, std::thread::hardware_concurrency()));
-  return run_rank0(a, space, executor, fmt::format("{} thread{}", threads, threads == 1 ? "" : "s"));
+  return run_rank0(a, space, executor, fmt::format("{} thread{}", threads, threads == 1 ? "" : "s"), stop);
 }
 
 // Under mpirun: every rank reads and checks the input (so every rank agrees on the points);
@@ -250,9 +234,9 @@ int dse_mpi(const DseArgs& a) {
     const Plan plan = load_plan(a);
     const DesignSpace space(plan.config, plan.base);
     check_design_space(space);
-    const SigintGuard guard;
-    MpiExecutor executor;
-    const int rc = run_rank0(a, space, executor, fmt::format("{} MPI ranks ({} computing)", session.size(), session.size() - 1));
+    const StopRequest stop(kDseStopMessage);
+    MpiExecutor executor(stop.flag());
+    const int rc = run_rank0(a, space, executor, fmt::format("{} MPI ranks ({} computing)", session.size(), session.size() - 1), stop);
     mpi::release_workers();
     return rc;
   });

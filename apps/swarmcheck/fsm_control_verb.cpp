@@ -33,6 +33,7 @@ struct Options {
   std::string sup, file, out;
   bool json = false;
   std::string engine = "impl";
+  Budgets budgets;   // --memory-limit of project (the impl engine)
 };
 
 void print_json(const Json& j) { fmt::print("{}\n", json_io::dump_text(j, 2)); }
@@ -134,7 +135,13 @@ int run_observable(const Options& o) {
 int run_project(const Options& o) {
   const engines::Engine engine = engines::engine_named(o.engine);
   const sv::Automaton a = sv::read_fsm_file(o.file);
-  const sv::Automaton obs = engines::observer(a, engine);
+  const sv::Automaton obs = [&] {
+    try {
+      return engines::observer(a, engine, o.budgets.memory_bytes);
+    } catch (const BudgetExceeded& e) {   // the library names the construction; the user knows the file
+      throw BudgetExceeded(o.file, std::string(e.what()).substr(e.where().size() + 2));
+    }
+  }();
   if (o.out.empty()) {
     fmt::print("{}", sv::write_fsm(obs));
     return 0;
@@ -189,6 +196,7 @@ void add_fsm_control_subcommands(CLI::App* fsm, int& exit_code) {
   proj->add_option("file", o->file, "the .fsm file")->required();
   proj->add_option("-o,--output", o->out, "the observer .fsm to write (default: standard output)");
   proj->add_flag("--json", o->json, "with -o: print a JSON summary");
+  add_budget_options(proj, o->budgets, false);
   proj->add_option("--engine", o->engine, "impl (fast, default) or model (the reference)")
       ->check(CLI::IsMember({"impl", "model"}));
   proj->callback([&exit_code, o] {

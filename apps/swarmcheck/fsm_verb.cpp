@@ -196,13 +196,26 @@ std::vector<std::string> unobservable_of(const is::Fsm& plant, const is::Fsm& sp
   return {out.begin(), out.end()};
 }
 
+// A budget stopped inside the library names its construction ("plant || spec"); the user's
+// message names the files.
+template <class F>
+auto naming_files(const FsmOptions& o, F&& f) {
+  try {
+    return f();
+  } catch (const BudgetExceeded& e) {
+    std::string files;
+    for (const auto& p : plants_then_specs(o)) files += (files.empty() ? "" : " || ") + p;
+    throw BudgetExceeded(files, std::string(e.what()).substr(e.where().size() + 2));
+  }
+}
+
 SynthFacts synth_compact(const FsmOptions& o) {
   const auto [plants, specs] = split_plants_specs(read_all_compact(plants_then_specs(o)), o.plants.size());
   const is::Fsm plant = is::product(pointers(plants), o.plants, o.budgets.memory_bytes);
   const is::Fsm spec = is::product(pointers(specs), o.specs, o.budgets.memory_bytes);
   const std::vector<std::string> unobservable = unobservable_of(plant, spec);
   if (!unobservable.empty()) {
-    const is::Fsm sup = is::supcon_normal(plant, spec);
+    const is::Fsm sup = naming_files(o, [&] { return is::supcon_normal(plant, spec, o.budgets.memory_bytes); });
     is::write_fsm_compact_file(o.out, sup, is::name_speller(sup));
     return {plant.state_count(), spec.state_count(), sup.state_count(), sup.edge_count(),
             count_set(sup.marked), is::is_controllable(plant, spec), unobservable};
@@ -221,7 +234,7 @@ SynthFacts synth_values(const FsmOptions& o, engines::Engine engine) {
   for (const Automaton* a : {&plant, &spec})
     for (const auto& e : sv::unobservable_events(a->events)) uo.insert(e);
   const Automaton sup = uo.empty() ? engines::supcon(plant, spec, engine, o.budgets.memory_bytes)
-                                   : engines::supcon_normal(plant, spec, engine);
+                                   : naming_files(o, [&] { return engines::supcon_normal(plant, spec, engine, o.budgets.memory_bytes); });
   const bool controllable = engines::is_controllable(plant, spec, engine);
   sv::write_fsm_file(o.out, sup);
   return {plant.states.size(), spec.states.size(), sup.states.size(),

@@ -48,20 +48,21 @@ struct RunEnd {
   std::string stall_reason;
 };
 
-Scenario resolve_scenario(const ExplorationRunOptions& o) {
-  Scenario s = o.scenario_path.empty() ? default_scenario() : load_scenario(o.scenario_path);
+// Validated once (a 10^6-robot file's cells are checked on loading only).
+ValidScenario resolve_scenario(const ExplorationRunOptions& o) {
+  ValidScenario loaded = o.scenario_path.empty() ? ValidScenario(default_scenario()) : load_valid_scenario(o.scenario_path);
   const std::string where = o.scenario_path.empty() ? "default scenario" : o.scenario_path;
-  if (!o.mode.empty()) s.mode = json_io::enum_from_string<Mode>(o.mode, "--mode");
-  if (!o.rule.empty()) s.rule = json_io::enum_from_string<RuleSet>(o.rule, "--rule");
-  if (o.seed) s.seed = *o.seed;
-  if (o.steps) s.max_steps = *o.steps;
+  ScenarioOverrides over;
+  if (!o.mode.empty()) over.mode = json_io::enum_from_string<Mode>(o.mode, "--mode");
+  if (!o.rule.empty()) over.rule = json_io::enum_from_string<RuleSet>(o.rule, "--rule");
+  over.seed = o.seed;
+  over.max_steps = o.steps;
   try {
-    validate(s);   // the overrides can make a valid file invalid (e.g. cosim step_size)
+    return with_overrides(std::move(loaded), over);   // they can make a valid file invalid (e.g. cosim step_size)
   } catch (const InputError& e) {
     throw InputError(where + " with the command-line overrides: " + e.where(),
                      std::string(e.what()).substr(e.where().size() + 2));
   }
-  return s;
 }
 
 class Progress {
@@ -184,7 +185,8 @@ int run(const ExplorationRunOptions& o) {
   if (o.stall_window < 0) throw InputError("--stall-window", "expected a number of steps >= 0 (0: never stop early)");
   impl::io::refuse_output_that_is_an_input(o.trace_path, {o.scenario_path});
   impl::io::refuse_output_that_is_an_input(o.svg_path, {o.scenario_path, o.trace_path});
-  const Scenario s = resolve_scenario(o);
+  const ValidScenario valid = resolve_scenario(o);
+  const Scenario& s = valid.get();
   const std::string where = o.scenario_path.empty() ? "default scenario" : o.scenario_path;
   const cx::Engine engine = o.engine == "model" ? cx::Engine::model : cx::Engine::impl;
   // The map's cells (engine), and the reachability check's bit per cell and queue.
@@ -200,7 +202,7 @@ int run(const ExplorationRunOptions& o) {
                "eP cannot reach 100 %\n", end.reach.unreachable_free_cells, free_cell_count(s));
   swarmcheck::exploration::ExplorationOptions options;
   options.threads = o.threads;
-  const auto sim = cx::make_simulation(engine, s, options);
+  const auto sim = cx::make_simulation(engine, valid, options);
   return run_with(*sim, s, o, end);
 }
 

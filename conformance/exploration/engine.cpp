@@ -29,7 +29,8 @@ class ModelSimulation final : public Simulation {
 
 class ImplSimulation final : public Simulation {
  public:
-  ImplSimulation(const Scenario& s, const ExplorationOptions& o) : x_(s, o) {}
+  template <class S>   // Scenario or ValidScenario
+  ImplSimulation(const S& s, const ExplorationOptions& o) : x_(s, o) {}
   void step() override { x_.step(); }
   bool done() const override { return x_.done(); }
   int64_t steps() const override { return x_.steps(); }
@@ -56,6 +57,11 @@ std::uint64_t estimated_bytes(Engine engine, const Scenario& s) {
 
 std::unique_ptr<Simulation> make_simulation(Engine engine, const Scenario& s, const ExplorationOptions& options) {
   if (engine == Engine::model) return std::make_unique<ModelSimulation>(s);
+  return std::make_unique<ImplSimulation>(s, options);
+}
+
+std::unique_ptr<Simulation> make_simulation(Engine engine, const ValidScenario& s, const ExplorationOptions& options) {
+  if (engine == Engine::model) return std::make_unique<ModelSimulation>(s.get());
   return std::make_unique<ImplSimulation>(s, options);
 }
 

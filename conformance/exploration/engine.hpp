@@ -6,6 +6,7 @@
 #include <memory>
 #include <optional>
 
+#include "spec/exploration/scenario.hpp"
 #include "spec/exploration/types.hpp"
 #include "swarmcheck/exploration.hpp"
 
@@ -40,6 +41,9 @@ swarmcheck::exploration::ExplorationOptions grouped_options();
 
 // `s` must be valid; `options` only matter to the impl.
 std::unique_ptr<Simulation> make_simulation(Engine engine, const swarmcheck::exploration::Scenario& s,
+                                            const swarmcheck::exploration::ExplorationOptions& options = {});
+// The same for a scenario already validated (the impl does not validate it again).
+std::unique_ptr<Simulation> make_simulation(Engine engine, const swarmcheck::exploration::ValidScenario& s,
                                             const swarmcheck::exploration::ExplorationOptions& options = {});
 
 }  // namespace swarmcheck::conformance::exploration

@@ -70,7 +70,8 @@ Alphabet alphabet_of(const std::vector<Automaton>& parts) {
 
 Case gen_case() {
   const std::string kind = *rc::gen::weightedElement<std::string>(
-      {{3, "unary"}, {3, "product"}, {1, "big"}, {3, "synthesis"}, {1, "big_synth"}, {3, "inclusion"}, {1, "roundtrip"}});
+      {{3, "unary"}, {3, "product"}, {1, "big"}, {3, "synthesis"}, {1, "big_synth"}, {3, "inclusion"}, {1, "roundtrip"},
+       {2, "control"}, {2, "observation"}});
   Case c{kind, {}};
   if (kind == "big" || kind == "big_synth") {
     c.inputs = gen_big_parts();
@@ -87,6 +88,12 @@ Case gen_case() {
     const int marked_pct = *uniform(5, 71);
     c.inputs = {*gen_automaton(alphabet, {100, 70, marked_pct}), *gen_automaton(alphabet, {30, 95, 70})};
   }
+  if (kind == "control") {
+    // A random supervisor: mostly not controllable, sometimes blocking, so both witnesses run.
+    c.inputs = {*gen_automaton(alphabet, {60, 70, 40}), *gen_automaton(alphabet, {30, 90, 60})};
+  }
+  if (kind == "observation")   // about half the events are unobservable (gen_alphabet)
+    c.inputs = {*gen_automaton(alphabet, {40, 70, 40}), *gen_automaton(alphabet, {25, 95, 70})};
   if (kind == "inclusion") {
     const Automaton a = *gen_automaton(alphabet, {40, 40, 30});
     c.inputs = {a, *rc::gen::oneOf(gen_automaton(alphabet, {40, 40, 30}), rc::gen::just(model::trim(a)), rc::gen::just(a))};
@@ -99,7 +106,7 @@ void note(const Case& c, const BuiltSizes& built, Coverage& cov) {
   ++cov.cases_by_kind[c.kind];
   if (c.kind == "unary") cov.largest_unary_states = std::max(cov.largest_unary_states, c.inputs[0].states.size());
   cov.largest_product_states = std::max(cov.largest_product_states, built.product_states);
-  if (c.kind == "synthesis" || c.kind == "big_synth") {
+  if (c.kind == "synthesis" || c.kind == "big_synth" || c.kind == "observation") {
     cov.largest_plant_states = std::max(cov.largest_plant_states, built.product_states);
     cov.largest_supervisor_states = std::max(cov.largest_supervisor_states, built.supervisor_states);
     cov.empty_supervisors += built.supervisor_states == 0 ? 1 : 0;
@@ -136,6 +143,11 @@ std::string command_for(const std::string& kind, const std::vector<std::string>&
   if (kind == "product" || kind == "big") return "swarmcheck fsm product" + all + " -o product.fsm [--engine model]";
   std::string plants;
   for (std::size_t i = 0; i + 1 < files.size(); ++i) plants += " " + files[i];
+  if (kind == "control") return "swarmcheck fsm controllable --plant" + plants + " --sup " + files.back() + " --json [--engine model]";
+  if (kind == "observation")
+    return "swarmcheck fsm project" + plants + " [--engine model]; swarmcheck fsm observable --plant" + plants + " --spec " +
+           files.back() + " --json [--engine model]; swarmcheck fsm synth --plant" + plants + " --spec " + files.back() +
+           " -o supervisor.fsm [--engine model]";
   return "swarmcheck fsm synth --plant" + plants + " --spec " + files.back() + " -o supervisor.fsm [--engine model]";
 }
 
@@ -145,6 +157,12 @@ std::optional<std::string> diff_case(const std::string& kind, const std::vector<
   if (kind == "unary") return diff_unary(in[0]);
   if (kind == "product" || kind == "big") return diff_product(in, built);
   if (kind == "synthesis" || kind == "big_synth") return diff_synthesis(plant_parts(in), in.back(), built);
+  if (kind == "control") return diff_control(plant_parts(in), in.back());
+  if (kind == "observation") {
+    if (auto d = diff_observer(in[0])) return d;
+    if (auto d = diff_observability(plant_parts(in), in.back())) return d;
+    return diff_supcon_normal(plant_parts(in), in.back(), built);
+  }
   if (kind == "inclusion") {
     if (auto d = diff_inclusion(in[0], in[1])) return d;
     return diff_inclusion(in[1], in[0]);

@@ -9,6 +9,9 @@
 //   big_synth   synthesis for a plant that is itself a big product
 //   inclusion   L(a) in L(b) and Lm(a) in Lm(b) both ways, verdicts and shortest witnesses
 //   roundtrip   reading what was written gives the automaton back
+//   control     a given supervisor: controllable? closed loop nonblocking? shortest witnesses
+//   observation with unobservable events: the observer, observability of a specification
+//               (verdict and witness words) and the supremal controllable normal supervisor
 // Results are compared as the user sees them, never up to renaming: the state count, the state
 // names in order (a duplicate name is a difference, never merged), and the bytes `fsm ... -o`
 // writes. A failure shrinks (RapidCheck), then loses every state no input reaches and every

@@ -55,16 +55,16 @@ Automaton supcon(const Automaton& plant, const Automaton& spec, Engine engine, s
   return engine == Engine::model ? model::supcon(plant, spec) : lib::supcon(plant, spec, max_bytes);
 }
 
-Automaton observer(const Automaton& a, Engine engine) {
-  return engine == Engine::model ? model::observer(a) : lib::observer(a);
+Automaton observer(const Automaton& a, Engine engine, std::uint64_t max_bytes) {
+  return engine == Engine::model ? model::observer(a) : lib::observer(a, max_bytes);
 }
 
 lib::ObservabilityReport observability(const Automaton& plant, const Automaton& spec, Engine engine) {
   return engine == Engine::model ? model::observability(plant, spec) : lib::observability(plant, spec);
 }
 
-Automaton supcon_normal(const Automaton& plant, const Automaton& spec, Engine engine) {
-  return engine == Engine::model ? model::supcon_normal(plant, spec) : lib::supcon_normal(plant, spec);
+Automaton supcon_normal(const Automaton& plant, const Automaton& spec, Engine engine, std::uint64_t max_bytes) {
+  return engine == Engine::model ? model::supcon_normal(plant, spec) : lib::supcon_normal(plant, spec, max_bytes);
 }
 
 lib::Inclusion language_inclusion(const Automaton& a, const Automaton& b, Engine engine) {

@@ -26,10 +26,10 @@ bool is_controllable(const Automaton& plant, const Automaton& spec, Engine engin
 swarmcheck::supervisor::ControlReport control_report(const Automaton& plant, const Automaton& sup,
                                                      Engine engine);
 Automaton supcon(const Automaton& plant, const Automaton& spec, Engine engine, std::uint64_t max_bytes = 0);
-Automaton observer(const Automaton& a, Engine engine);
+Automaton observer(const Automaton& a, Engine engine, std::uint64_t max_bytes = 0);
 swarmcheck::supervisor::ObservabilityReport observability(const Automaton& plant, const Automaton& spec,
                                                           Engine engine);
-Automaton supcon_normal(const Automaton& plant, const Automaton& spec, Engine engine);
+Automaton supcon_normal(const Automaton& plant, const Automaton& spec, Engine engine, std::uint64_t max_bytes = 0);
 swarmcheck::supervisor::Inclusion language_inclusion(const Automaton& a, const Automaton& b,
                                                      Engine engine);
 

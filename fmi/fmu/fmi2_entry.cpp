@@ -21,13 +21,17 @@ namespace {
 enum class Phase { instantiated, initialization, stepping, terminated, failed };
 
 struct Instance {
-  std::string name;
+  // First what every fmi2Get/Set/DoStep reads, on one cache line: a master calls hundreds of
+  // instances per step, so each call's chain of dependent loads is what it costs.
+  Phase phase = Phase::instantiated;
+  uint32_t slot_count = 0;
+  const VariableTable::Slot* slots = nullptr;   // component->table()'s, which never move
+  std::unique_ptr<Component> component;
+  double time_s = 0;
+  bool logging = false;
   fmi2CallbackLogger logger = nullptr;
   fmi2ComponentEnvironment environment = nullptr;
-  bool logging = false;
-  Phase phase = Phase::instantiated;
-  double time_s = 0;
-  std::unique_ptr<Component> component;
+  std::string name;
 };
 
 struct SavedState {
@@ -135,9 +139,9 @@ std::string path_of_uri(const std::string& uri) {
 }
 
 inline const VariableTable::Slot& variable(const Instance& in, fmi2ValueReference vr, BaseType type, const char* what) {
-  const VariableTable::Slot* s = in.component->table().slot(vr);
-  if (!s || s->type != type) no_such_variable(in, vr, what);
-  return *s;
+  if (vr >= in.slot_count || in.slots[vr].type != type) [[unlikely]]
+    no_such_variable(in, vr, what);
+  return in.slots[vr];
 }
 
 // Whether variable vr may be set now (FMI 2.0 section 4.2.4, table of fmi2SetXXX).
@@ -225,6 +229,8 @@ FMI2_EXPORT fmi2Component fmi2Instantiate(fmi2String instanceName, fmi2Type type
       throw FmuError("fmi2Instantiate: GUID " + std::string(guid ? guid : "(null)") + " is not this FMU's " + expected +
                      " (modelDescription.xml and resources/ come from different exports)");
     in->component = make_component(setup);
+    in->slots = in->component->table().slots().data();
+    in->slot_count = static_cast<uint32_t>(in->component->table().slots().size());
   } catch (const std::exception& e) {
     log(in.get(), fmi2Error, "logError", e.what());
     return nullptr;
@@ -276,11 +282,11 @@ FMI2_EXPORT fmi2Status fmi2Reset(fmi2Component c) {
 }
 
 FMI2_EXPORT fmi2Status fmi2GetReal(fmi2Component c, const fmi2ValueReference vr[], size_t n, fmi2Real value[]) {
-  return get_values(c, vr, n, value, BaseType::real, "fmi2GetReal", [](const VariableTable::Slot& v) { return *v.real; });
+  return get_values(c, vr, n, value, BaseType::real, "fmi2GetReal", [](const VariableTable::Slot& v) { return v.real(); });
 }
 FMI2_EXPORT fmi2Status fmi2GetInteger(fmi2Component c, const fmi2ValueReference vr[], size_t n, fmi2Integer value[]) {
   return get_values(c, vr, n, value, BaseType::integer, "fmi2GetInteger",
-                    [](const VariableTable::Slot& v) { return *v.integer; });
+                    [](const VariableTable::Slot& v) { return v.integer(); });
 }
 FMI2_EXPORT fmi2Status fmi2GetBoolean(fmi2Component c, const fmi2ValueReference[], size_t n, fmi2Boolean[]) {
   return guarded(c, "fmi2GetBoolean", {Phase::initialization, Phase::stepping, Phase::terminated, Phase::failed},
@@ -298,12 +304,12 @@ FMI2_EXPORT fmi2Status fmi2GetString(fmi2Component c, const fmi2ValueReference[]
 }
 
 FMI2_EXPORT fmi2Status fmi2SetReal(fmi2Component c, const fmi2ValueReference vr[], size_t n, const fmi2Real value[]) {
-  return set_values(c, vr, n, value, BaseType::real, "fmi2SetReal", [](const VariableTable::Slot& v, double x) { *v.real = x; });
+  return set_values(c, vr, n, value, BaseType::real, "fmi2SetReal", [](const VariableTable::Slot& v, double x) { v.real() = x; });
 }
 FMI2_EXPORT fmi2Status fmi2SetInteger(fmi2Component c, const fmi2ValueReference vr[], size_t n,
                                       const fmi2Integer value[]) {
   return set_values(c, vr, n, value, BaseType::integer, "fmi2SetInteger",
-                    [](const VariableTable::Slot& v, int x) { *v.integer = x; });
+                    [](const VariableTable::Slot& v, int x) { v.integer() = x; });
 }
 FMI2_EXPORT fmi2Status fmi2SetBoolean(fmi2Component c, const fmi2ValueReference[], size_t n, const fmi2Boolean[]) {
   return guarded(c, "fmi2SetBoolean", {Phase::instantiated, Phase::initialization, Phase::stepping},

@@ -13,8 +13,8 @@
 
 namespace swarmcheck::fmi {
 
-enum class BaseType { real, integer };
-enum class Causality { parameter, input, output, local };
+enum class BaseType : uint8_t { real, integer };
+enum class Causality : uint8_t { parameter, input, output, local };
 enum class Variability { constant, fixed, discrete, continuous };
 enum class Initial { none, exact, calculated };
 
@@ -64,7 +64,7 @@ class VariableTable {
       }
       attributes(v, role);
       description_.push_back(describe(member));
-      slots_.push_back(Slot{v.real, v.integer, v.type, v.causality});
+      slots_.push_back(Slot{v.real ? static_cast<void*>(v.real) : static_cast<void*>(v.integer), v.type, v.causality});
       vars_.push_back(std::move(v));
     });
   }
@@ -72,12 +72,13 @@ class VariableTable {
   const std::vector<Variable>& variables() const { return vars_; }
   // What fmi2Get/Set need of a variable, compact (the hot path of every communication step).
   struct Slot {
-    double* real;
-    int32_t* integer;
+    void* storage;   // double* (Real) or int32_t* (Integer)
     BaseType type;
     Causality causality;
+    double& real() const { return *static_cast<double*>(storage); }
+    int32_t& integer() const { return *static_cast<int32_t*>(storage); }
   };
-  const Slot* slot(uint32_t vr) const { return vr < slots_.size() ? &slots_[vr] : nullptr; }
+  const std::vector<Slot>& slots() const { return slots_; }   // by value reference
   const char* description(uint32_t vr) const { return description_[vr]; }
   const Variable* find(uint32_t vr) const { return vr < vars_.size() ? &vars_[vr] : nullptr; }
   const Variable* find(const std::string& name) const;

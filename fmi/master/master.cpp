@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdarg>
 #include <cstdio>
+#include <algorithm>
 #include <map>
 
 #include "spec/util/input_error.hpp"
@@ -50,21 +51,17 @@ struct Master::Instance {
   fmi2Component component = nullptr;
   LogSink sink;
   fmi2CallbackFunctions callbacks;
-  // The outputs other instances read (one fmi2Get call per type per step), and the inputs set.
+  // While connecting: the value references of the outputs other instances read and of the inputs
+  // set, by type (the step reads them from the contiguous arrays of Master::Buffers).
   std::vector<fmi2ValueReference> source_real_vr, source_int_vr, target_real_vr, target_int_vr;
-  std::vector<double> source_real, target_real;
-  std::vector<int> source_int, target_int;
   std::vector<std::size_t> links_in;   // the links into this instance
-  // Inputs changed since they were last set (Jacobi sets only those: an FMU keeps an input's value
-  // until it is set again, FMI 2.0 section 4.2.1). True at first: every input is set once.
-  bool real_inputs_changed = true, int_inputs_changed = true;
   Instance() : callbacks{logger, nullptr, nullptr, nullptr, &sink} {}
 };
 
 struct Master::Link {
   std::size_t from = 0, to = 0;
   VarType type = VarType::real;
-  std::size_t from_slot = 0, to_slot = 0;   // in the source's source_* and the target's target_* arrays
+  std::size_t from_slot = 0, to_slot = 0;   // in the source's source_* and the target's target_* lists
 };
 
 void Master::fail(int status, const Instance& in, const std::string& call) const {
@@ -127,20 +124,39 @@ Master::Master(const MultiModel& mm, const CoSimConfig& config, Algorithm algori
     dst.links_in.push_back(links_.size());
     links_.push_back(link);
   }
-  for (auto& in : instances_) {
-    in->source_real.resize(in->source_real_vr.size());
-    in->source_int.resize(in->source_int_vr.size());
-    in->target_real.resize(in->target_real_vr.size());
-    in->target_int.resize(in->target_int_vr.size());
+  // The step's arrays: every instance's slices back to back, in stepping order.
+  const auto slice = [](std::vector<uint32_t>& all, const std::vector<fmi2ValueReference>& mine) {
+    const Slice s{static_cast<uint32_t>(all.size()), static_cast<uint32_t>(mine.size())};
+    all.insert(all.end(), mine.begin(), mine.end());
+    return s;
+  };
+  for (const auto& in : instances_) {
+    Hot h;
+    h.api = &in->library->api();
+    h.src_real = slice(src_real_vr_, in->source_real_vr);
+    h.src_int = slice(src_int_vr_, in->source_int_vr);
+    h.tgt_real = slice(tgt_real_vr_, in->target_real_vr);
+    h.tgt_int = slice(tgt_int_vr_, in->target_int_vr);
+    hot_.push_back(h);
   }
-  for (const Link& l : links_) {   // the buffers keep their addresses from here on
-    Instance& src = *instances_[l.from];
-    Instance& dst = *instances_[l.to];
+  src_real_.resize(src_real_vr_.size());
+  src_int_.resize(src_int_vr_.size());
+  tgt_real_.resize(tgt_real_vr_.size());
+  tgt_int_.resize(tgt_int_vr_.size());
+  for (const Link& l : links_) {
+    const Hot& src = hot_[l.from];
+    const Hot& dst = hot_[l.to];
+    const auto target = static_cast<uint32_t>(l.to);
     if (l.type == VarType::real)
-      real_copies_.push_back({&src.source_real[l.from_slot], &dst.target_real[l.to_slot], &dst.real_inputs_changed});
+      real_copies_.push_back({src.src_real.begin + static_cast<uint32_t>(l.from_slot),
+                              dst.tgt_real.begin + static_cast<uint32_t>(l.to_slot), target});
     else
-      int_copies_.push_back({&src.source_int[l.from_slot], &dst.target_int[l.to_slot], &dst.int_inputs_changed});
+      int_copies_.push_back({src.src_int.begin + static_cast<uint32_t>(l.from_slot),
+                             dst.tgt_int.begin + static_cast<uint32_t>(l.to_slot), target});
   }
+  const auto by_target = [](const Copy& a, const Copy& b) { return a.to < b.to; };
+  std::sort(real_copies_.begin(), real_copies_.end(), by_target);
+  std::sort(int_copies_.begin(), int_copies_.end(), by_target);
   for (const Parameter& p : mm.parameters) {
     const auto [k, v] = variable(p.port, p.where);
     if (v->causality != "parameter" && v->causality != "input")
@@ -173,10 +189,12 @@ void Master::start(const MultiModel& mm, const CoSimConfig& config) {
         return {k, instances_[k]->library->description().find(p.variable)};
     return {0, nullptr};
   };
-  for (auto& in : instances_) {
+  for (std::size_t k = 0; k < instances_.size(); ++k) {
+    Instance* in = instances_[k].get();
     const ModelDescription& md = in->library->description();
     in->component = in->library->api().instantiate(in->label.c_str(), fmi2CoSimulation, md.guid.c_str(),
                                                    in->library->resource_uri().c_str(), &in->callbacks, fmi2False, fmi2False);
+    hot_[k].component = in->component;
     if (!in->component)
       throw InputError(in->library->path() + ": instance " + in->label,
                        "fmi2Instantiate failed" + (in->sink.last.empty() ? std::string() : ": " + in->sink.last));
@@ -204,7 +222,7 @@ void Master::start(const MultiModel& mm, const CoSimConfig& config) {
     check(in->library->api().enter_initialization_mode(in->component), *in, "fmi2EnterInitializationMode");
   for (auto& in : instances_)
     check(in->library->api().exit_initialization_mode(in->component), *in, "fmi2ExitInitializationMode");
-  for (auto& in : instances_) fetch_outputs(*in);
+  for (std::size_t k = 0; k < instances_.size(); ++k) fetch_outputs(k);
 }
 
 void Master::release() {
@@ -220,80 +238,82 @@ Master::~Master() { release(); }
 
 double Master::time_s() const { return config_.start_s + static_cast<double>(steps_) * config_.step_s; }
 
-void Master::fetch_outputs(Instance& in) {
-  const Fmi2Functions& api = in.library->api();
-  if (!in.source_real_vr.empty())
-    check(api.get_real(in.component, in.source_real_vr.data(), in.source_real_vr.size(), in.source_real.data()), in,
-          "fmi2GetReal");
-  if (!in.source_int_vr.empty())
-    check(api.get_integer(in.component, in.source_int_vr.data(), in.source_int_vr.size(), in.source_int.data()), in,
-          "fmi2GetInteger");
+void Master::fetch_outputs(std::size_t source) {
+  const Hot& h = hot_[source];
+  if (h.src_real.size)
+    check(h.api->get_real(h.component, &src_real_vr_[h.src_real.begin], h.src_real.size, &src_real_[h.src_real.begin]),
+          *instances_[source], "fmi2GetReal");
+  if (h.src_int.size)
+    check(h.api->get_integer(h.component, &src_int_vr_[h.src_int.begin], h.src_int.size, &src_int_[h.src_int.begin]),
+          *instances_[source], "fmi2GetInteger");
 }
 
 // Sets the target's inputs from its sources' outputs as they are now, fetched one by one
 // (Gauss-Seidel: a source stepped earlier in this step shows its new value).
 void Master::set_inputs(std::size_t target) {
-  Instance& dst = *instances_[target];
-  for (const std::size_t li : dst.links_in) {
+  const Hot& dst = hot_[target];
+  for (const std::size_t li : instances_[target]->links_in) {
     const Link& l = links_[li];
-    Instance& src = *instances_[l.from];
+    const Hot& src = hot_[l.from];
     if (l.type == VarType::real) {
-      check(src.library->api().get_real(src.component, &src.source_real_vr[l.from_slot], 1, &src.source_real[l.from_slot]),
-              src, "fmi2GetReal");
-      dst.target_real[l.to_slot] = src.source_real[l.from_slot];
+      const uint32_t from = src.src_real.begin + static_cast<uint32_t>(l.from_slot);
+      check(src.api->get_real(src.component, &src_real_vr_[from], 1, &src_real_[from]), *instances_[l.from],
+            "fmi2GetReal");
+      tgt_real_[dst.tgt_real.begin + l.to_slot] = src_real_[from];
     } else {
-      check(src.library->api().get_integer(src.component, &src.source_int_vr[l.from_slot], 1, &src.source_int[l.from_slot]),
-              src, "fmi2GetInteger");
-      dst.target_int[l.to_slot] = src.source_int[l.from_slot];
+      const uint32_t from = src.src_int.begin + static_cast<uint32_t>(l.from_slot);
+      check(src.api->get_integer(src.component, &src_int_vr_[from], 1, &src_int_[from]), *instances_[l.from],
+            "fmi2GetInteger");
+      tgt_int_[dst.tgt_int.begin + l.to_slot] = src_int_[from];
     }
   }
-  push_inputs(dst, false);
+  push_inputs(target, false);
 }
 
-void Master::push_inputs(Instance& dst, bool only_changed) {
-  const Fmi2Functions& api = dst.library->api();
-  if (!dst.target_real_vr.empty() && (dst.real_inputs_changed || !only_changed))
-    check(api.set_real(dst.component, dst.target_real_vr.data(), dst.target_real_vr.size(), dst.target_real.data()), dst,
-          "fmi2SetReal");
-  if (!dst.target_int_vr.empty() && (dst.int_inputs_changed || !only_changed))
-    check(api.set_integer(dst.component, dst.target_int_vr.data(), dst.target_int_vr.size(), dst.target_int.data()), dst,
-          "fmi2SetInteger");
-  dst.real_inputs_changed = dst.int_inputs_changed = false;
+void Master::push_inputs(std::size_t target, bool only_changed) {
+  Hot& h = hot_[target];
+  if (h.tgt_real.size && (h.real_changed || !only_changed))
+    check(h.api->set_real(h.component, &tgt_real_vr_[h.tgt_real.begin], h.tgt_real.size, &tgt_real_[h.tgt_real.begin]),
+          *instances_[target], "fmi2SetReal");
+  if (h.tgt_int.size && (h.int_changed || !only_changed))
+    check(h.api->set_integer(h.component, &tgt_int_vr_[h.tgt_int.begin], h.tgt_int.size, &tgt_int_[h.tgt_int.begin]),
+          *instances_[target], "fmi2SetInteger");
+  h.real_changed = h.int_changed = false;
 }
 
 void Master::step() {
   const double t = time_s();
-  const auto do_step = [&](Instance& in) {
-    const int status = in.library->api().do_step(in.component, t, config_.step_s, fmi2True);
+  const auto do_step = [&](std::size_t k) {
+    const int status = hot_[k].api->do_step(hot_[k].component, t, config_.step_s, fmi2True);
     if (status == fmi2OK) return;
     char when[64];
     std::snprintf(when, sizeof when, "fmi2DoStep at t = %.17g s", t);
-    fail(status, in, when);
+    fail(status, *instances_[k], when);
   };
   if (algorithm_ == Algorithm::jacobi) {
     // The source buffers hold every output as of t (fetched after each instance's last step, or
     // after initialisation): copied to the inputs first, so stepping one instance cannot change
     // another's inputs. Each instance is then set, stepped and read in one visit (its data stays
     // in the cache).
-    for (const Copy<double>& c : real_copies_) {
-      if (std::bit_cast<uint64_t>(*c.to) == std::bit_cast<uint64_t>(*c.from)) continue;
-      *c.to = *c.from;
-      *c.changed = true;
+    for (const Copy& c : real_copies_) {
+      if (std::bit_cast<uint64_t>(tgt_real_[c.to]) == std::bit_cast<uint64_t>(src_real_[c.from])) continue;
+      tgt_real_[c.to] = src_real_[c.from];
+      hot_[c.target].real_changed = true;
     }
-    for (const Copy<int>& c : int_copies_) {
-      if (*c.to == *c.from) continue;
-      *c.to = *c.from;
-      *c.changed = true;
+    for (const Copy& c : int_copies_) {
+      if (tgt_int_[c.to] == src_int_[c.from]) continue;
+      tgt_int_[c.to] = src_int_[c.from];
+      hot_[c.target].int_changed = true;
     }
-    for (auto& in : instances_) {
-      push_inputs(*in, true);
-      do_step(*in);
-      fetch_outputs(*in);
+    for (std::size_t k = 0; k < hot_.size(); ++k) {
+      push_inputs(k, true);
+      do_step(k);
+      fetch_outputs(k);
     }
   } else {
     for (std::size_t k = 0; k < instances_.size(); ++k) {
       set_inputs(k);
-      do_step(*instances_[k]);
+      do_step(k);
     }
   }
   ++steps_;

@@ -63,8 +63,8 @@ class Master {
   void start(const MultiModel& mm, const CoSimConfig& config);   // instantiate, parameters, initialise
   void release();                                               // terminate and free every instance
   void set_inputs(std::size_t target);
-  void push_inputs(Instance& dst, bool only_changed);
-  void fetch_outputs(Instance& in);
+  void push_inputs(std::size_t target, bool only_changed);
+  void fetch_outputs(std::size_t source);
 
   Algorithm algorithm_;
   CoSimConfig config_;
@@ -73,15 +73,30 @@ class Master {
   std::vector<std::unique_ptr<FmuLibrary>> libraries_;
   std::vector<std::unique_ptr<Instance>> instances_;
   std::vector<Link> links_;
-  // Jacobi's copies, source value to target input, as raw pointers into the instances' buffers.
-  template <class T>
-  struct Copy {
-    const T* from;
-    T* to;
-    bool* changed;   // the target's flag: its inputs of this type differ from what it was last given
+  // What a step touches, contiguous and in stepping order, so an instance's data is a few cache
+  // lines (the step is bound by memory latency, not by arithmetic, at 100s of instances).
+  //   hot_[k]: instance k's component, its library's functions, and its slices of the arrays
+  //   below: the outputs other instances read (src_*), the inputs it is given (tgt_*).
+  struct Slice {
+    uint32_t begin = 0, size = 0;
   };
-  std::vector<Copy<double>> real_copies_;
-  std::vector<Copy<int>> int_copies_;
+  struct Hot {
+    void* component = nullptr;
+    const Fmi2Functions* api = nullptr;
+    Slice src_real, src_int, tgt_real, tgt_int;
+    // Inputs changed since they were last set (Jacobi sets only those: an FMU keeps an input's
+    // value until it is set again, FMI 2.0 section 4.2.1). True at first: every input is set once.
+    bool real_changed = true, int_changed = true;
+  };
+  std::vector<Hot> hot_;
+  std::vector<uint32_t> src_real_vr_, src_int_vr_, tgt_real_vr_, tgt_int_vr_;
+  std::vector<double> src_real_, tgt_real_;
+  std::vector<int> src_int_, tgt_int_;
+  // Jacobi's copies, source value to target input (indices into the arrays above), by target.
+  struct Copy {
+    uint32_t from, to, target;
+  };
+  std::vector<Copy> real_copies_, int_copies_;
   std::vector<std::string> output_names_;
   std::vector<Port> outputs_;
 };

@@ -76,12 +76,20 @@ std::uint64_t Exploration::estimated_bytes(const Scenario& s) {
 
 Exploration::Exploration(const Scenario& s, ExplorationOptions options, RobotParams robot) {
   validate(s);
+  init(s, options, robot);
+}
+
+Exploration::Exploration(const ValidScenario& s, ExplorationOptions options, RobotParams robot) {
+  init(s.get(), options, robot);
+}
+
+void Exploration::init(const Scenario& s, ExplorationOptions options, RobotParams robot) {
   state_ = std::make_unique<State>(s, options, robot);
-  for (const Point_m& p : s.robots) {
-    state_->ctrl.push_back(initial_controller());
-    state_->body.push_back(BodyState{p[0], p[1], 0.0});
-    state_->heading.push_back(heading_of(0.0));
-  }
+  const std::size_t n = s.robots.size();
+  state_->ctrl.assign(n, initial_controller());
+  state_->heading.assign(n, heading_of(0.0));
+  state_->body.reserve(n);
+  for (const Point_m& p : s.robots) state_->body.push_back(BodyState{p[0], p[1], 0.0});
 }
 
 Exploration::~Exploration() = default;

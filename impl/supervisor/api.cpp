@@ -50,14 +50,16 @@ Automaton supcon(const Automaton& plant, const Automaton& spec, std::uint64_t ma
   return is::decompile(is::supcon(is::compile(plant), is::compile(spec), max_bytes));
 }
 
-Automaton observer(const Automaton& a) { return is::decompile(is::observer(is::compile(a))); }
+Automaton observer(const Automaton& a, std::uint64_t max_bytes) {
+  return is::decompile(is::observer(is::compile(a), max_bytes));
+}
 
 ObservabilityReport observability(const Automaton& plant, const Automaton& spec) {
   return is::observability(is::compile(plant), is::compile(spec));
 }
 
-Automaton supcon_normal(const Automaton& plant, const Automaton& spec) {
-  return is::decompile(is::supcon_normal(is::compile(plant), is::compile(spec)));
+Automaton supcon_normal(const Automaton& plant, const Automaton& spec, std::uint64_t max_bytes) {
+  return is::decompile(is::supcon_normal(is::compile(plant), is::compile(spec), max_bytes));
 }
 
 Inclusion language_inclusion(const Automaton& a, const Automaton& b) {

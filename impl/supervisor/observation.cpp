@@ -9,6 +9,7 @@
 
 #include "impl/supervisor/operations.hpp"
 #include "impl/supervisor/reach.hpp"
+#include "spec/util/budget.hpp"
 #include "spec/util/input_error.hpp"
 
 namespace swarmcheck::impl::supervisor {
@@ -30,7 +31,24 @@ struct ObserverClasses {
   std::vector<std::vector<StateId>> next;
 };
 
-ObserverClasses observer_classes(const Fsm& f) {
+// A memory budget of a construction (0: none), and what its message names.
+struct Limit {
+  std::uint64_t max_bytes = 0;
+  std::string where;
+  // Throws BudgetExceeded once `estimate` passes the limit; `done` says how far it got.
+  void check(double estimate, const std::string& done) const {
+    if (max_bytes == 0 || estimate <= static_cast<double>(max_bytes)) return;
+    throw BudgetExceeded(where, done + ": about " + format_bytes(estimate) + " and growing, over the limit of " +
+                                    format_bytes(static_cast<double>(max_bytes)) +
+                                    " (raise it with --memory-limit, e.g. --memory-limit 64G)");
+  }
+};
+
+// The subset construction can be exponential in the states, so it is what a budget guards. The
+// estimate, per class: the index's node and bucket, three vectors (key, list, row of successors)
+// with their heap blocks, so 176 bytes + 4 per event; per member 8 (key and list) and 4 for what
+// is built from the classes afterwards (an observer's state names, H's pairs).
+ObserverClasses observer_classes(const Fsm& f, const Limit& limit) {
   ObserverClasses c;
   if (f.state_count() == 0) return c;
   std::vector<std::uint32_t> stamp(f.state_count(), 0);
@@ -61,7 +79,14 @@ ObserverClasses observer_classes(const Fsm& f) {
   };
   visit(reach({0}));
   std::vector<StateId> post;
-  for (std::size_t k = 0; k < c.sets.size(); ++k)
+  double members = 0;
+  for (std::size_t k = 0; k < c.sets.size(); ++k) {
+    members += static_cast<double>(c.sets[k].size());
+    if (limit.max_bytes != 0 && k % 256 == 0) {
+      const double classes = static_cast<double>(c.sets.size());
+      limit.check(classes * (176.0 + 4.0 * static_cast<double>(f.event_count())) + 12.0 * members * classes / static_cast<double>(k + 1),
+                  "the observer stopped after " + std::to_string(k) + " classes (" + std::to_string(c.sets.size()) + " found)");
+    }
     for (EventId e = 0; e < f.event_count(); ++e) {
       if (!f.observable[e]) continue;
       ++round;
@@ -77,6 +102,7 @@ ObserverClasses observer_classes(const Fsm& f) {
       const StateId t = visit(reach(post));
       c.next[k][e] = t;
     }
+  }
   return c;
 }
 
@@ -93,9 +119,9 @@ void refuse_commas(const Fsm& f, const std::string& what, const AppendName& name
 
 }  // namespace
 
-Fsm observer(const Fsm& f) {
+Fsm observer(const Fsm& f, std::uint64_t max_bytes, const std::string& where) {
   refuse_commas(f, "observer", name_speller(f));
-  const ObserverClasses c = observer_classes(f);
+  const ObserverClasses c = observer_classes(f, Limit{max_bytes, where});
   Fsm out;
   std::vector<EventId> renumber(f.event_count(), kNoEvent);
   for (EventId e = 0; e < f.event_count(); ++e)
@@ -175,10 +201,11 @@ swarmcheck::supervisor::ObservabilityReport observability(const Fsm& plant, cons
   return r;
 }
 
-Fsm supcon_normal(const Fsm& plant, const Fsm& spec) {
-  const Product loop = product_with_tuples({&plant, &spec}, {"plant", "spec"});
+Fsm supcon_normal(const Fsm& plant, const Fsm& spec, std::uint64_t max_bytes) {
+  const Product loop = product_with_tuples({&plant, &spec}, {"plant", "spec"}, max_bytes);
   const Fsm& a = loop.fsm;
-  const ObserverClasses c = observer_classes(a);
+  const Limit limit{max_bytes, "plant || spec"};
+  const ObserverClasses c = observer_classes(a, limit);
   // H: pairs (z, k), breadth first from (0, 0).
   Fsm h;
   h.event_names = a.event_names;
@@ -199,13 +226,20 @@ Fsm supcon_normal(const Fsm& plant, const Fsm& spec) {
       return it->second;
     };
     visit(0, 0);
+    double edge_count = 0;
     for (StateId s = 0; s < origin.size(); ++s) {
+      // Per pair: its origin, marking, edge list and index entry; per edge its event and target.
+      if (s % 4096 == 0)
+        limit.check(static_cast<double>(origin.size()) * 96.0 + 8.0 * edge_count,
+                    "normal synthesis stopped after " + std::to_string(s) + " (state, observer class) pairs (" +
+                        std::to_string(origin.size()) + " found)");
       const auto [z, k] = origin[s];
       for (auto i = a.first_edge[z]; i < a.first_edge[z + 1]; ++i) {
         const EventId e = a.edge_event[i];
         const StateId t = visit(a.edge_target[i], a.observable[e] ? c.next[k][e] : k);
         edges[s].emplace_back(e, t);
       }
+      edge_count += static_cast<double>(a.first_edge[z + 1] - a.first_edge[z]);
     }
   }
   set_edges(h, edges);

@@ -62,9 +62,12 @@ struct Synthesis {
 Synthesis synthesize(const Fsm& plant, const Fsm& spec, std::uint64_t max_bytes = 0);
 
 // Partial observation (spec/supervisor/observation.hpp), state for state as the model's.
-Fsm observer(const Fsm& f);  // f must be named
+// max_bytes (0: none): the construction stops with a BudgetExceeded naming `where` (observer) or
+// "plant || spec" once its estimated size passes it (the observer's subset construction can be
+// exponential in the states).
+Fsm observer(const Fsm& f, std::uint64_t max_bytes = 0, const std::string& where = "observer");  // f must be named
 swarmcheck::supervisor::ObservabilityReport observability(const Fsm& plant, const Fsm& spec);
-Fsm supcon_normal(const Fsm& plant, const Fsm& spec);
+Fsm supcon_normal(const Fsm& plant, const Fsm& spec, std::uint64_t max_bytes = 0);
 
 // The check of swarmcheck::supervisor::check on the compact form.
 swarmcheck::supervisor::CheckReport check(const Fsm& f);

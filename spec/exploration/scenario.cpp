@@ -5,6 +5,7 @@
 #include <cmath>
 #include <fstream>
 #include <map>
+#include <optional>
 #include <set>
 #include <sstream>
 
@@ -13,6 +14,7 @@
 #include "spec/util/demand.hpp"
 #include "spec/util/hana_json.hpp"
 #include "spec/util/input_file.hpp"
+#include "spec/util/json_pair_lists.hpp"
 #include "spec/util/json_text.hpp"
 
 namespace swarmcheck::exploration {
@@ -191,15 +193,89 @@ Scenario default_scenario() {
   return s;
 }
 
-void validate(const Scenario& s) {
+namespace {
+// validate's checks in order, the cells' only if asked for.
+void validate_checks(const Scenario& s, bool cells) {
   validate_domains(s, DomainStage::before_cells);
-  validate_cells(s);
+  if (cells) validate_cells(s);
   validate_domains(s, DomainStage::params);
   validate_cross_params(s.params, s.mode);
   validate_domains(s, DomainStage::after_params);
 }
+}  // namespace
+
+void validate(const Scenario& s) { validate_checks(s, true); }
+
+ValidScenario with_overrides(ValidScenario v, const ScenarioOverrides& o) {
+  Scenario s = std::move(v).release();
+  if (o.mode) s.mode = *o.mode;
+  if (o.rule) s.rule = *o.rule;
+  if (o.seed) s.seed = *o.seed;
+  if (o.max_steps) s.max_steps = *o.max_steps;
+  // The cells passed before and nothing they read changed: the first failing check, in order, is
+  // the same without them.
+  validate_checks(s, false);
+  return ValidScenario(std::move(s), ValidScenario::Checked{});
+}
+
+namespace {
+
+// The members a scenario's JSON sets, over the defaults; not validated.
+Scenario read_scenario_json(const json_io::Json& j) {
+  Scenario s = default_scenario();
+  s.obstacles.clear();   // a file without "obstacles" has none (the default's block is map-10 only)
+  if (!j.is_object()) throw InputError("(top level)", "expected an object");
+  if (!j.contains("map_size")) throw InputError("map_size", "missing (the map's side in cells)");
+  if (!j.contains("robots")) throw InputError("robots", "missing (a list of [x, y] positions)");
+  json_io::from_json(j, "", s);
+  return s;
+}
+
+// The fast path (json_pair_lists.hpp): robots and obstacles read without a DOM, the rest of the
+// text through the ordinary reader. Nothing when the text is not the plain case or the rest has
+// any error: the whole text is then read the ordinary way, which reports it as it always has.
+std::optional<Scenario> read_scenario_fast(const std::string& text, const std::string& file) {
+  std::vector<Point_m> robots;
+  std::vector<CellIndex> obstacles;
+  json_io::PairList<double> robot_list{"robots", &robots};
+  json_io::PairList<int32_t> obstacle_list{"obstacles", &obstacles};
+  const std::optional<std::string> rest = json_io::extract_pair_lists(text, robot_list, obstacle_list);
+  if (!rest) return std::nullopt;
+  std::optional<Scenario> s;
+  try {
+    s = read_scenario_json(json_io::parse_json_text(*rest, file));
+  } catch (const std::exception&) {
+    return std::nullopt;
+  }
+  if (robot_list.found) s->robots = std::move(robots);
+  if (obstacle_list.found) s->obstacles = std::move(obstacles);
+  return s;
+}
+
+}  // namespace
+
+ValidScenario parse_valid_scenario(const std::string& text, const std::string& file) {
+  std::optional<Scenario> s = read_scenario_fast(text, file);
+  if (!s) {
+    const auto j = json_io::parse_json_text(text, file);   // syntax: file:line:col
+    try {
+      s = read_scenario_json(j);
+    } catch (const InputError& e) {
+      throw json_io::in_file(e, file);
+    }
+  }
+  try {
+    return ValidScenario(std::move(*s));
+  } catch (const InputError& e) {
+    throw json_io::in_file(e, file);
+  }
+}
 
 Scenario parse_scenario(const std::string& text, const std::string& file) {
+  return parse_valid_scenario(text, file).release();
+}
+
+Scenario parse_scenario_dom(const std::string& text, const std::string& file) {
   const auto j = json_io::parse_json_text(text, file);
   try {
     return scenario_from_json(j);
@@ -209,19 +285,16 @@ Scenario parse_scenario(const std::string& text, const std::string& file) {
 }
 
 Scenario scenario_from_json(const json_io::Json& j) {
-  Scenario s = default_scenario();
-  s.obstacles.clear();   // a file without "obstacles" has none (the default's block is map-10 only)
-  if (!j.is_object()) throw InputError("(top level)", "expected an object");
-  if (!j.contains("map_size")) throw InputError("map_size", "missing (the map's side in cells)");
-  if (!j.contains("robots")) throw InputError("robots", "missing (a list of [x, y] positions)");
-  json_io::from_json(j, "", s);
+  Scenario s = read_scenario_json(j);
   validate(s);
   return s;
 }
 
-Scenario load_scenario(const std::string& path) {
-  return parse_scenario(io_input::read_input_file(path, "scenario file"), path);
+ValidScenario load_valid_scenario(const std::string& path) {
+  return parse_valid_scenario(io_input::read_input_file(path, "scenario file"), path);
 }
+
+Scenario load_scenario(const std::string& path) { return load_valid_scenario(path).release(); }
 
 int64_t free_cell_count(const Scenario& s) {
   return int64_t{s.map_size} * s.map_size - static_cast<int64_t>(s.obstacles.size());

@@ -5,7 +5,9 @@
 // obstacles ([i, j] cells), params (the thesis's names; each defaults to the built-in value),
 // rule, mode, seed, max_steps. map_size and robots are required; obstacles default to none;
 // the rest default to the built-in scenario's values. Every problem is an InputError naming the JSON path.
+#include <optional>
 #include <string>
+#include <utility>
 
 #include "spec/exploration/types.hpp"
 #include "spec/util/hana_json.hpp"
@@ -30,13 +32,49 @@ Scenario default_scenario();
 // Throws InputError("<path>", what was expected) on the first problem, checked in key order.
 void validate(const Scenario& s);
 
-// Parses and validates a scenario file's text; `file` prefixes every message.
+// A run's command-line overrides of a scenario's keys (each if given).
+struct ScenarioOverrides {
+  std::optional<Mode> mode;
+  std::optional<RuleSet> rule;
+  std::optional<uint64_t> seed;
+  std::optional<int64_t> max_steps;
+};
+
+// A scenario validate() accepted, held so that nothing changes it: what takes one (Exploration's
+// constructor) need not validate it again, which costs a sort of the robots' cells.
+class ValidScenario {
+ public:
+  explicit ValidScenario(Scenario s) : s_(std::move(s)) { validate(s_); }   // throws as validate()
+  const Scenario& get() const { return s_; }
+  operator const Scenario&() const { return s_; }
+  // The scenario, to change (and validate again).
+  Scenario release() && { return std::move(s_); }
+
+ private:
+  struct Checked {};
+  ValidScenario(Scenario s, Checked) : s_(std::move(s)) {}
+  friend ValidScenario with_overrides(ValidScenario s, const ScenarioOverrides& o);
+  Scenario s_;
+};
+
+// `s` with the overrides, validated again (throws as validate()): every check but the cells',
+// which read only the map, the robots and the obstacles, none of which an override changes.
+ValidScenario with_overrides(ValidScenario s, const ScenarioOverrides& o);
+
+// Parses and validates a scenario file's text; `file` prefixes every message. Big robot and
+// obstacle lists are read without a JSON DOM (spec/util/json_pair_lists.hpp); the result and
+// every message are parse_scenario_dom's.
+ValidScenario parse_valid_scenario(const std::string& text, const std::string& file);
 Scenario parse_scenario(const std::string& text, const std::string& file);
+
+// The same through a whole JSON DOM: the reference the fast path is tested against.
+Scenario parse_scenario_dom(const std::string& text, const std::string& file);
 
 // A scenario from parsed JSON (as parse_scenario, without the file name in the messages).
 Scenario scenario_from_json(const json_io::Json& j);
 
 // Reads, parses and validates a file.
+ValidScenario load_valid_scenario(const std::string& path);
 Scenario load_scenario(const std::string& path);
 
 int64_t free_cell_count(const Scenario& s);

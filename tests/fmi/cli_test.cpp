@@ -2,6 +2,12 @@
 // are exit status 2 with one message naming the file and JSON path (or the FMU's logged
 // message), with no temporary folder left behind.
 #include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <thread>
 
 #include <filesystem>
 #include <fstream>
@@ -139,6 +145,48 @@ TEST(FmiCli, BadMultiModelsAreStatusTwoWithTheJsonPathAndLeaveNoTemporaryFolder)
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.out.find("algorithm.type: expected \"fixed-step\""), std::string::npos) << r.out;
   EXPECT_TRUE(f.tmp_empty());
+}
+
+// A long co-simulation stopped by Ctrl-C or SIGTERM: the FMUs are unloaded and their unpacked
+// folders removed, the old outputs.csv keeps its bytes, and the status is 128 + the signal.
+TEST(FmiCli, SigintAndSigtermUnloadTheFmusLeaveNoFolderAndKeepTheOldOutput) {
+  Folder f;
+  Json coe = Json::parse(std::ifstream(f.dir / "mm" / "coe.json"));
+  coe["endTime"] = 1e7;
+  const std::string config = f.write(coe, "long-coe.json");
+  const fs::path csv = f.dir / "outputs.csv";
+  for (const int sig : {SIGINT, SIGTERM}) {
+    std::ofstream(csv) << "the old outputs";
+    const std::string cmd = "exec env TMPDIR=" + f.tmp.string() + " " + kBin + " cosim " +
+                            (f.dir / "mm" / "multimodel.json").string() + " --config " + config + " -o " + csv.string() +
+                            " >" + (f.dir / "err.txt").string() + " 2>&1";
+    const pid_t pid = ::fork();
+    ASSERT_GE(pid, 0);
+    if (pid == 0) {
+      ::signal(SIGINT, SIG_DFL);
+      ::signal(SIGTERM, SIG_DFL);
+      ::execl("/bin/sh", "sh", "-c", cmd.c_str(), static_cast<char*>(nullptr));
+      ::_exit(127);
+    }
+    // Wait until the three FMUs are unpacked, then a little into the run.
+    const auto unpacked = [&] { return std::distance(fs::directory_iterator(f.tmp), fs::directory_iterator{}); };
+    for (int k = 0; k < 400 && unpacked() < 3; ++k) std::this_thread::sleep_for(std::chrono::milliseconds(25));
+    EXPECT_EQ(unpacked(), 3);
+    std::this_thread::sleep_for(std::chrono::milliseconds(300));
+    ::kill(pid, sig);
+    int status = 0;
+    ASSERT_EQ(::waitpid(pid, &status, 0), pid);
+    std::ifstream err_file(f.dir / "err.txt");
+    const std::string err((std::istreambuf_iterator<char>(err_file)), std::istreambuf_iterator<char>());
+    ASSERT_TRUE(WIFEXITED(status)) << "killed by the signal instead of stopping: " << err;
+    EXPECT_EQ(WEXITSTATUS(status), 128 + sig) << err;
+    EXPECT_NE(err.find("swarmcheck cosim: interrupted at t = "), std::string::npos) << err;
+    EXPECT_TRUE(f.tmp_empty());
+    std::ifstream in(csv);
+    EXPECT_EQ(std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>()), "the old outputs");
+    for (const auto& e : fs::directory_iterator(f.dir))   // no temporary file of the output left
+      EXPECT_EQ(e.path().filename().string().find(".tmp"), std::string::npos) << e.path();
+  }
 }
 
 TEST(FmiCli, ExportRefusesImpossibleRequestsWithStatusTwo) {

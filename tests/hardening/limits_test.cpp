@@ -191,6 +191,32 @@ TEST(Limits, AProductOverTheMemoryLimitStopsCleanlyWithTheStatesExplored) {
   EXPECT_EQ(run_binary(kBin, "fsm product " + c2 + " " + c2 + " -o " + out).status, 0);
 }
 
+// An automaton of n + 2 states whose observer has 2^n classes: from 0, an unobservable u guesses
+// that the a just coming is the n-th last observed event (the classic blow-up of determinising).
+std::string exponential_observer_fsm(int n) {
+  std::string t = std::to_string(n + 2) + "\n\n0 1 3\na 0 c o\nb 0 c o\nu g uc uo\n\ng 1 1\na 1 c o\n";
+  for (int i = 1; i < n; ++i)
+    t += "\n" + std::to_string(i) + " 1 2\na " + std::to_string(i + 1) + " c o\nb " + std::to_string(i + 1) + " c o\n";
+  return t + "\n" + std::to_string(n) + " 1 0\n";
+}
+
+TEST(Limits, AnObserverOverTheMemoryLimitStopsProjectAndNormalSynthesisCleanly) {
+  const fs::path d = scratch("observer");
+  const std::string plant = write(d / "guess.fsm", exponential_observer_fsm(22));
+  const std::string spec = write(d / "all.fsm", "1\n\ns 1 3\na s c o\nb s c o\nu s uc uo\n");
+  const std::string out = write(d / "out.fsm", "old");
+  expect_one_error_line(run_binary(kBin, "fsm project " + plant + " -o " + out + " --memory-limit 20M"),
+                        plant + ": the observer stopped after ");
+  expect_one_error_line(run_binary(kBin, "fsm synth --plant " + plant + " --spec " + spec + " -o " + out + " --memory-limit 20M"),
+                        plant + " || " + spec + ": the observer stopped after ");
+  EXPECT_EQ(read(out), "old");
+  // Small enough, both run: 2^8 classes.
+  const std::string small = write(d / "guess8.fsm", exponential_observer_fsm(8));
+  const auto r = run_binary(kBin, "fsm project " + small + " -o " + out + " --json --memory-limit 20M");
+  ASSERT_EQ(r.status, 0) << r.out;
+  EXPECT_NE(r.out.find("\"states\": 256"), std::string::npos) << r.out;
+}
+
 TEST(Limits, ATraceEstimatedOverTheLimitIsRefusedBeforeTheRunStarts) {
   const fs::path d = scratch("trace-size");
   const std::string mission = kSource + "/scenarios/thesis/thesis-mission.json";

@@ -27,7 +27,8 @@ TEST(SupervisorConformance, ImplEqualsModelExactlyOnEveryOperationOfTheSeededCam
   const CampaignReport r = run_campaign(o);
   ASSERT_FALSE(r.counterexample.has_value()) << r.counterexample->difference << "\n" << r.counterexample->command;
   EXPECT_EQ(r.cases_run, o.cases);
-  for (const char* kind : {"unary", "product", "big", "synthesis", "big_synth", "inclusion", "roundtrip"})
+  for (const char* kind : {"unary", "product", "big", "synthesis", "big_synth", "inclusion", "roundtrip",
+                           "control", "observation"})
     EXPECT_GT(r.coverage.cases_by_kind.count(kind), 0u) << kind;
   EXPECT_GE(r.coverage.largest_product_states, 1000u);   // the growth paths ran
   EXPECT_GT(r.coverage.inclusions_failing, 0);           // witnesses were compared

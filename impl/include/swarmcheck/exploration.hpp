@@ -4,6 +4,7 @@
 //   #include <swarmcheck/exploration.hpp>
 //   swarmcheck::exploration::Scenario s = swarmcheck::exploration::default_scenario();
 //   swarmcheck::exploration::Exploration run(s);          // validates s; throws swarmcheck::InputError
+//   (a ValidScenario, as load_valid_scenario returns, is taken as it is)
 //   while (!run.done()) run.step();
 //   std::printf("eP %.1f %% after %lld steps\n", run.eP(), (long long)run.steps());
 //
@@ -39,6 +40,8 @@ class Exploration {
  public:
   explicit Exploration(const Scenario& s, ExplorationOptions options = {},
                        RobotParams robot = {});
+  // A scenario already validated (parse_valid_scenario, load_valid_scenario): not checked again.
+  explicit Exploration(const ValidScenario& s, ExplorationOptions options = {}, RobotParams robot = {});
   // About how many bytes a run of `s` allocates (the map's cells and the robots' state), for
   // refusing a scenario that cannot fit before allocating it.
   static std::uint64_t estimated_bytes(const Scenario& s);
@@ -71,6 +74,7 @@ class Exploration {
   const Scenario& scenario() const;
 
  private:
+  void init(const Scenario& s, ExplorationOptions options, RobotParams robot);
   struct State;
   std::unique_ptr<State> state_;
 };

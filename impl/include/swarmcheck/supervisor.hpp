@@ -80,12 +80,13 @@ Automaton supcon(const Automaton& plant, const Automaton& spec, std::uint64_t ma
 // ---- partial observation (`uo` events; spec/supervisor/observation.hpp) --------------------------
 
 // The observer: the natural projection onto the observable events, determinised (states "{q,r}").
-Automaton observer(const Automaton& a);
+// max_bytes as for supcon (0: none): the subset construction can be exponential in the states.
+Automaton observer(const Automaton& a, std::uint64_t max_bytes = 0);
 // Is L(plant || spec) observable for plant? With two words of one projection as a witness.
 ObservabilityReport observability(const Automaton& plant, const Automaton& spec);
 // The supremal controllable, normal and nonblocking supervisor (states "x.y.o<k>", k the
 // observer class); supcon's language when no event is unobservable.
-Automaton supcon_normal(const Automaton& plant, const Automaton& spec);
+Automaton supcon_normal(const Automaton& plant, const Automaton& spec, std::uint64_t max_bytes = 0);
 
 // L(a) in L(b) and Lm(a) in Lm(b), each with its shortlex-least witness when it fails.
 Inclusion language_inclusion(const Automaton& a, const Automaton& b);
