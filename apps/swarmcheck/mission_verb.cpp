@@ -160,6 +160,7 @@ int run_run(const RunOptions& o) {
               {"yields", r.yields},
               {"replans_sensed", r.replans_sensed},
               {"bumps", r.bumps},
+              {"steers", r.steers},
               // least gap between two robots' disks over the run; null with one robot
               {"clearance_min_m", std::isfinite(r.clearance_min_m) ? Json(r.clearance_min_m) : Json()}};
     fmt::print("{}\n", json_io::dump_text(j, 2));

@@ -17,6 +17,7 @@
 #include "spec/mission/run.hpp"
 #include "spec/mission/sensing.hpp"
 #include "spec/mission/separation.hpp"
+#include "spec/mission/steering.hpp"
 #include "spec/mission/world.hpp"
 #include "swarmcheck/mission.hpp"
 
@@ -43,6 +44,7 @@ struct RobotSim {
   bool leg_is_task = false;             // the leg's goal is the front task
   std::deque<sm::Point> route;          // in a world: the leg's waypoints after this one
   bool following = false;               // driving to a later waypoint of the route
+  bool on_detour = false;               // the leg is a steering detour (steering.hpp)
   std::optional<std::size_t> last_task; // the task it was sent to last
   double planned = 0.0;                 // the cost model's travel of the tasks it was sent to
   double travelled = 0.0;
@@ -62,9 +64,10 @@ struct Proposal {
   bool arrived;
 };
 
-Proposal propose(const RunOptions& o, const ex::RobotParams& rp, const RobotSim& r) {
-  const sm::Point target = r.leg;
-  Proposal p{r.pos, r.theta, r.ctrl, r.driving, false};
+// Robot r's move towards `target`, on a leg already taken (`driving`) or a new one.
+Proposal propose(const RunOptions& o, const ex::RobotParams& rp, const RobotSim& r,
+                 const sm::Point& target, bool driving) {
+  Proposal p{r.pos, r.theta, r.ctrl, driving, false};
   if (o.body == BodyModel::kinematic) {
     const double d = sm::distance(r.pos, target);
     const double step = o.speed_m_per_s * o.dt_s;
@@ -78,15 +81,19 @@ Proposal propose(const RunOptions& o, const ex::RobotParams& rp, const RobotSim&
     }
     return p;
   }
-  ex::ControllerInputs in{ex::BodyState{r.pos[0], r.pos[1], r.theta}, target, r.driving ? 0 : 1};
+  ex::ControllerInputs in{ex::BodyState{r.pos[0], r.pos[1], r.theta}, target, driving ? 0 : 1};
   p.ctrl = ex::controller_step(rp, r.ctrl, in);
   const ex::BodyState b =
       ex::body_step(rp, in.pose, p.ctrl.servo_left, p.ctrl.servo_right, o.dt_s);
   p.pos = {b.x_m, b.y_m};
   p.theta = b.theta_rad;
-  if (!r.driving && p.ctrl.on_destination_output == 0) p.driving = true;
-  if (r.driving && p.ctrl.on_destination_output == 1) p.arrived = true;
+  if (!driving && p.ctrl.on_destination_output == 0) p.driving = true;
+  if (driving && p.ctrl.on_destination_output == 1) p.arrived = true;
   return p;
+}
+
+Proposal propose(const RunOptions& o, const ex::RobotParams& rp, const RobotSim& r) {
+  return propose(o, rp, r, r.leg, r.driving);
 }
 
 class Runner {
@@ -261,6 +268,7 @@ class Runner {
   // One step of motion; false when nothing could move and no event fired (deadlock).
   bool move(double before, double t, std::uint64_t step) {
     bool progress = false;
+    const std::vector<std::optional<std::size_t>> waited = waits();
     std::vector<sm::Activity> did(robots_.size(), sm::Activity::waiting_for_task);
     for (std::size_t i = 0; i < robots_.size(); ++i) {
       RobotSim& r = robots_[i];
@@ -269,7 +277,7 @@ class Runner {
       if (r.queue.empty()) continue;
       if (sensing_) learn(i, sm::scan_cells(truth_, r.pos, o_.seed, step, i));
       if (!r.driving && !r.following) start_leg(i);
-      const Proposal p = propose(o_, rp_, r);
+      Proposal p = propose(o_, rp_, r);
       if (sensing_ && sm::overlaps_obstacle(truth_, p.pos, m_.robots[i].radius)) {  // a bump
         ++result_.bumps;
         did[i] = sm::Activity::busy;
@@ -279,12 +287,16 @@ class Runner {
       if (m_.world && sm::overlaps_obstacle(*m_.world, p.pos, m_.robots[i].radius))
         throw std::logic_error(fmt::format("robot {} would overlap an obstacle at [{}, {}] at t = {} s",
                                            m_.robots[i].name, p.pos[0], p.pos[1], t));
+      std::optional<sm::Point> detour;  // a standoff's detour point (spec/mission/steering.hpp)
       if (const auto j = sm::yields_to(m_, i, r.pos, p.pos, ways())) {
-        r.yielded = true;
-        r.yielded_to = *j;
-        ++result_.yields;
-        did[i] = sm::Activity::waiting_for_robot;
-        continue;
+        if (sm::standoff(i, *j, ways())) detour = steer(i, p);
+        if (!detour) {
+          r.yielded = true;
+          r.yielded_to = *j;
+          ++result_.yields;
+          did[i] = sm::Activity::waiting_for_robot;
+          continue;
+        }
       }
       const auto entries = sm::entry_events(m_, i, r.pos, p.pos);
       if (!sm::fire_all(m_, state_, entries)) {
@@ -294,6 +306,14 @@ class Runner {
       }
       did[i] = sm::Activity::busy;
       progress = true;
+      if (detour) {  // a fresh leg to the detour point; arrived, the robot routes anew
+        ++result_.steers;
+        r.on_detour = true;
+        r.leg = *detour;
+        r.leg_is_task = false;
+        r.route.clear();
+        r.following = false;
+      }
       r.travelled += sm::distance(r.pos, p.pos);
       r.pos = p.pos;
       where_[i] = p.pos;
@@ -313,7 +333,38 @@ class Runner {
       for (const auto& e : entries) fire(e, t);
     }
     account(did, before, t);
-    return progress;
+    // A change in who yields to whom is progress too: a standoff seen now lets a robot steer
+    // in the next step (spec/mission/steering.hpp).
+    return progress || waits() != waited;
+  }
+
+  // Per robot, the robot it yielded to at its last turn to move, if it did.
+  std::vector<std::optional<std::size_t>> waits() const {
+    std::vector<std::optional<std::size_t>> out;
+    for (const auto& r : robots_) out.push_back(r.yielded ? std::optional(r.yielded_to) : std::nullopt);
+    return out;
+  }
+
+  // Robot i's first detour point whose move passes rule 3's checks (the world, the yield
+  // test), with that move in p; nothing when none does.
+  std::optional<sm::Point> steer(std::size_t i, Proposal& p) const {
+    const RobotSim& r = robots_[i];
+    const double radius = m_.robots[i].radius;
+    sm::SteerView view{where_};
+    if (m_.world) {
+      view.map = sensing_ ? &r.map : &m_.world->occupied;
+      view.traversable = sensing_ ? &r.trav : &m_.world->traversable[i];
+    }
+    const auto w = ways();
+    for (const sm::Point& e : sm::steer_candidates(m_, i, r.pos, r.leg, view)) {
+      if (r.on_detour && e == r.leg) continue;  // driving on to it is what yields
+      const Proposal q = propose(o_, rp_, r, e, false);
+      if (m_.world && sm::overlaps_obstacle(sensing_ ? truth_ : *m_.world, q.pos, radius)) continue;
+      if (sm::yields_to(m_, i, r.pos, q.pos, w)) continue;
+      p = q;
+      return e;
+    }
+    return std::nullopt;
   }
 
   // The next leg of robot i: its front task, unless the current plan has the robot enter a
@@ -321,6 +372,7 @@ class Runner {
   // region nearest to it, a margin inside (so that the FSM's expected entry happens).
   void start_leg(std::size_t i) {
     RobotSim& r = robots_[i];
+    r.on_detour = false;
     const sm::Point task = m_.tasks[r.queue.front()].at;
     r.leg = task;
     r.leg_is_task = true;

@@ -16,6 +16,7 @@
 #include "spec/mission/avoidance.hpp"
 #include "spec/mission/sensing.hpp"
 #include "spec/mission/separation.hpp"
+#include "spec/mission/steering.hpp"
 #include "spec/mission/world.hpp"
 #include "spec/util/demand.hpp"
 
@@ -36,6 +37,7 @@ struct Robot {
   bool waypoint_is_task = false;    // the leg's goal is the front task (else a region's point)
   std::vector<sm::Point> route;     // in a world: the leg's waypoints after this one
   bool following = false;           // driving to a later waypoint of the leg's route
+  bool on_detour = false;           // the leg is a steering detour (steering.hpp)
   bool sent = false;                // sent to a task at least once
   std::size_t sent_to = 0;          // the task it was sent to last
   double planned_m = 0.0;           // the cost model's travel of the tasks it was sent to
@@ -264,6 +266,7 @@ void route_leg(World& w, std::size_t i, const sm::Region* g) {
 
 void start_leg(World& w, std::size_t i) {
   Robot& r = w.robots[i];
+  r.on_detour = false;
   r.waypoint = w.m.tasks[r.tasks.front()].at;
   r.waypoint_is_task = true;
   if (!w.current) {
@@ -339,9 +342,40 @@ bool learn(World& w, std::size_t i, const std::vector<std::size_t>& cells) {
   return true;
 }
 
+// Local steering (spec/mission/steering.hpp): robot i, in a standoff, tries the detour points
+// in order; the first whose move passes the world and the yield test is its move.
+struct Steered {
+  sm::Point detour;
+  Move move;
+};
+
+std::optional<Steered> steer(const World& w, std::size_t i) {
+  const Robot& r = w.robots[i];
+  const std::vector<sm::Point> at = positions(w);
+  sm::SteerView view{at};
+  if (w.m.world) {
+    view.map = w.sensing ? &r.map : &w.m.world->occupied;
+    view.traversable = w.sensing ? &r.trav : &w.m.world->traversable[i];
+  }
+  for (const sm::Point& e : sm::steer_candidates(w.m, i, r.pos, r.waypoint, view)) {
+    if (r.on_detour && e == r.waypoint) continue;  // going on to it is what yields
+    Robot fresh = r;  // a new leg to e
+    fresh.waypoint = e;
+    fresh.on_leg = false;
+    const Move mv = propose(w, fresh);
+    const double radius = w.m.robots[i].radius;
+    if (w.m.world && sm::overlaps_obstacle(w.sensing ? w.truth : *w.m.world, mv.pos, radius)) continue;
+    if (sm::yields_to(w.m, i, r.pos, mv.pos, ways(w))) continue;
+    return Steered{e, mv};
+  }
+  return std::nullopt;
+}
+
 // Rule 3 for every robot; false when no robot moved.
 bool move_all(World& w, double t_from, double t, std::uint64_t step) {
   bool moved = false;
+  std::vector<std::optional<std::size_t>> waited;  // whom each robot yielded to, if it did
+  for (const Robot& r : w.robots) waited.push_back(r.yielded ? std::optional(r.yielded_to) : std::nullopt);
   std::vector<sm::Activity> did(w.robots.size(), sm::Activity::waiting_for_task);
   for (std::size_t i = 0; i < w.robots.size(); ++i) {
     Robot& r = w.robots[i];
@@ -350,7 +384,7 @@ bool move_all(World& w, double t_from, double t, std::uint64_t step) {
     if (r.tasks.empty()) continue;
     if (w.sensing) learn(w, i, sm::scan_cells(w.truth, r.pos, w.o.seed, step, i));
     if (!r.on_leg && !r.following) start_leg(w, i);
-    const Move mv = propose(w, r);
+    Move mv = propose(w, r);
     if (w.sensing && sm::overlaps_obstacle(w.truth, mv.pos, w.m.robots[i].radius)) {  // a bump
       ++w.result.bumps;
       did[i] = sm::Activity::busy;
@@ -360,12 +394,17 @@ bool move_all(World& w, double t_from, double t, std::uint64_t step) {
     if (w.m.world && sm::overlaps_obstacle(*w.m.world, mv.pos, w.m.robots[i].radius))
       throw std::logic_error(fmt::format("robot {} would overlap an obstacle at [{}, {}] at t = {} s",
                                          w.m.robots[i].name, mv.pos[0], mv.pos[1], t));
+    std::optional<Steered> steered;
     if (const auto j = sm::yields_to(w.m, i, r.pos, mv.pos, ways(w))) {
-      r.yielded = true;
-      r.yielded_to = *j;
-      ++w.result.yields;
-      did[i] = sm::Activity::waiting_for_robot;
-      continue;
+      if (sm::standoff(i, *j, ways(w))) steered = steer(w, i);
+      if (!steered) {
+        r.yielded = true;
+        r.yielded_to = *j;
+        ++w.result.yields;
+        did[i] = sm::Activity::waiting_for_robot;
+        continue;
+      }
+      mv = steered->move;
     }
     const std::vector<std::string> entries = sm::entry_events(w.m, i, r.pos, mv.pos);
     if (!sm::fire_all(w.m, w.q, entries)) {
@@ -375,6 +414,14 @@ bool move_all(World& w, double t_from, double t, std::uint64_t step) {
     }
     did[i] = sm::Activity::busy;
     moved = true;
+    if (steered) {  // the detour is the robot's leg now
+      ++w.result.steers;
+      r.on_detour = true;
+      r.waypoint = steered->detour;
+      r.waypoint_is_task = false;
+      r.route.clear();
+      r.following = false;
+    }
     r.travelled_m += sm::distance(r.pos, mv.pos);
     r.pos = mv.pos;
     r.theta_rad = mv.theta_rad;
@@ -393,6 +440,10 @@ bool move_all(World& w, double t_from, double t, std::uint64_t step) {
     for (const auto& e : entries) fire(w, e, t);
   }
   account(w, did, t_from, t);
+  for (std::size_t i = 0; i < w.robots.size(); ++i) {  // new yields are progress too
+    const Robot& r = w.robots[i];
+    if (waited[i] != (r.yielded ? std::optional(r.yielded_to) : std::nullopt)) moved = true;
+  }
   return moved;
 }
 

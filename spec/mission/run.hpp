@@ -160,10 +160,11 @@ struct RunResult {
       (std::size_t, yields),             // robot-steps a robot yielded to another (rule 3)
       (std::size_t, replans_sensed),     // legs re-routed on a map the sensor changed
       (std::size_t, bumps),              // proposals held back by an unknown obstacle
+      (std::size_t, steers),             // detours taken by local steering (steering.hpp)
       (double, clearance_min_m));        // least clearance_m of the step records (>= 0)
   RunResult()
       : completed(false), time_s(0.0), makespan_planned(0.0), replans(0), plan_cache_hits(0),
-        yields(0), replans_sensed(0), bumps(0), clearance_min_m(0.0) {}
+        yields(0), replans_sensed(0), bumps(0), steers(0), clearance_min_m(0.0) {}
 };
 
 }  // namespace swarmcheck::mission

@@ -1,6 +1,6 @@
 // Robots never overlap each other (spec/mission/separation.hpp, spec/mission/run.hpp rule 3): the
 // yield rule's test, the starts' check, the crossing example (one robot yields, both finish), a
-// head-on deadlock with its reason, and the property on generated missions with radii: at no step
+// head-on deadlock in a narrow corridor with its reason, and the property on generated missions with radii: at no step
 // are two robots closer than the sum of their radii, and the library equals the model bit for bit.
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
@@ -104,13 +104,18 @@ TEST(MissionSeparation, CrossingRobotsYieldAndCompleteWithoutOverlapUnicycle) {
   crossing_run(sm::BodyModel::unicycle);
 }
 
-// A head-on meeting on one line: each would overlap the other, neither moves, and the run ends
-// in a deadlock that names who waits for whom.
-TEST(MissionSeparation, HeadOnRobotsDeadlockWithAReasonNamingWhoYieldsToWhom) {
+// A head-on meeting in a corridor too narrow to pass (1.5 m; robots of radius 0.25 m may end
+// their detours only on cells traversable for them, the middle row): each would overlap the
+// other, B finds no way aside (spec/mission/steering.hpp), and the run ends in a deadlock that
+// names who waits for whom. (In the open, B steers aside: tests/mission/steering_test.cpp.)
+TEST(MissionSeparation, HeadOnRobotsInATooNarrowCorridorDeadlockWithAReasonNamingWhoYieldsToWhom) {
   const auto m = crossing_with([](Json& j) {
     j["robots"][1]["start"] = {8, 0};
     j["tasks"][1]["at"] = {0, 0};
     j["regions"][1]["corners"] = {{-0.5, -0.5}, {0.5, 0.5}};
+    for (auto& r : j["robots"]) r["radius"] = 0.25;
+    const std::string wall(22, '#'), free(22, '.');
+    j["world"] = {{"resolution_m", 0.5}, {"origin", {-1, -1.25}}, {"rows", {wall, free, free, free, wall}}};
   }, nullptr);
   ASSERT_TRUE(m.has_value());
   sm::RunOptions o;
@@ -119,8 +124,9 @@ TEST(MissionSeparation, HeadOnRobotsDeadlockWithAReasonNamingWhoYieldsToWhom) {
   EXPECT_FALSE(r.completed);
   EXPECT_EQ(r.reason, "deadlock in state sww: no robot can move (enabled events: a1f, b2f); "
                       "robot A yields to robot B; robot B yields to robot A");
-  EXPECT_GT(r.travel[0] + r.travel[1], 6.9);  // they met half way, 1 m apart
-  EXPECT_LE(r.travel[0] + r.travel[1], 7.0);
+  EXPECT_EQ(r.steers, 0u);
+  EXPECT_GT(r.travel[0] + r.travel[1], 7.4);  // they met half way, 0.5 m apart
+  EXPECT_LE(r.travel[0] + r.travel[1], 7.5);
   EXPECT_GE(r.clearance_min_m, 0.0);
   EXPECT_EQ(cm::diff_run(*m, o).value_or(""), "");
 }
