@@ -54,9 +54,9 @@ sm::PlanQuery neighbour(const sm::Mission& m, sm::PlanQuery q) {
 Case gen_case() {
   Case c;
   c.kind = *rc::gen::weightedElement<std::string>(
-      {{3, "run"}, {2, "plan"}, {2, "ties"}, {2, "allocation"}, {1, "swap"}, {2, "stream"}});
-  if (c.kind == "run") {
-    const RunCase r = *run_case();
+      {{3, "run"}, {1, "meet"}, {2, "plan"}, {2, "ties"}, {2, "allocation"}, {1, "swap"}, {2, "stream"}});
+  if (c.kind == "run" || c.kind == "meet") {
+    const RunCase r = c.kind == "run" ? *run_case() : *head_on_case();
     c.mission = r.mission;
     c.options = r.options;
     return c;
@@ -112,14 +112,14 @@ std::optional<std::string> diff_stream(const sm::Mission& m, const std::vector<s
 }
 
 std::optional<std::string> diff_case(const Case& c) {
-  if (c.kind == "run") return diff_run(c.mission, c.options);
+  if (c.kind == "run" || c.kind == "meet") return diff_run(c.mission, c.options);
   if (c.kind == "stream") return diff_stream(c.mission, c.queries);
   return diff_plan(c.mission, c.queries.front());
 }
 
 void note(const Case& c, Coverage& cov) {
   ++cov.cases_by_kind[c.kind];
-  if (c.kind == "run") {
+  if (c.kind == "run" || c.kind == "meet") {
     const sm::RunResult r = sm::run_mission(c.mission, c.options);
     ++cov.run_endings[r.completed ? "complete" : r.reason.substr(0, r.reason.find(' ', r.reason.find(' ') + 1))];
     return;
@@ -146,7 +146,7 @@ CampaignCounterexample write(const CampaignOptions& o, const Case& c, const std:
   const auto files = write_counterexample(o.out_dir, stem, c.mission, c.options, difference);
   cx.mission_path = files.mission_path;
   cx.fsm_path = files.fsm_path;
-  cx.command = c.kind == "run" ? files.command : "swarmcheck mission plan " + files.mission_path + " --json";
+  cx.command = c.kind == "run" || c.kind == "meet" ? files.command : "swarmcheck mission plan " + files.mission_path + " --json";
   if (c.kind == "stream") {
     cx.queries_path = o.out_dir + "/" + stem + "-queries.json";
     nlohmann::ordered_json all = nlohmann::ordered_json::array();

@@ -33,7 +33,11 @@ Json meanings(const sm::Mission& m) {
 
 std::string mission_json(const sm::Mission& m, const std::string& fsm_file, const std::string& about) {
   Json robots = Json::array(), tasks = Json::array(), regions = Json::array();
-  for (const auto& r : m.robots) robots.push_back({{"name", r.name}, {"start", r.start}});
+  for (const auto& r : m.robots) {
+    Json robot = {{"name", r.name}, {"start", r.start}};
+    if (r.radius > 0) robot["radius"] = r.radius;
+    robots.push_back(robot);
+  }
   for (const auto& t : m.tasks) tasks.push_back({{"name", t.name}, {"at", t.at}});
   for (const auto& g : m.regions)
     regions.push_back({{"name", g.name}, {"corners", Json::array({g.lo, g.hi})}});

@@ -40,6 +40,10 @@ struct RunCase {
   swarmcheck::mission::RunOptions options;
 };
 rc::Gen<RunCase> run_case();
+// Head-on meetings (local steering): robots a at (0, 0) and b at (D, y) (D 3..8 m, |y| <= 0.3 m),
+// radii 0.2..0.6 m, swap ends at once (two-tasks.fsm), in the open or (one case in two) in a
+// corridor 2.5, 3 or 4 m wide (the world's border; 0.25 m cells); either body, dt 0.05 or 0.1 s.
+rc::Gen<RunCase> head_on_case();
 
 swarmcheck::mission::Mission allocation_mission(std::size_t robots, std::size_t tasks,
                                           std::uint64_t seed);

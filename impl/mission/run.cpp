@@ -44,13 +44,13 @@ struct RobotSim {
   bool leg_is_task = false;             // the leg's goal is the front task
   std::deque<sm::Point> route;          // in a world: the leg's waypoints after this one
   bool following = false;               // driving to a later waypoint of the route
-  bool on_detour = false;               // the leg is a steering detour (steering.hpp)
   std::optional<std::size_t> last_task; // the task it was sent to last
   double planned = 0.0;                 // the cost model's travel of the tasks it was sent to
   double travelled = 0.0;
   bool blocked = false;
   bool yielded = false;                 // kept its state: its move would overlap another robot
   std::size_t yielded_to = 0;           // ... the robot it yielded to
+  bool stuck = false;                   // ... in a standoff, finding no way aside
   std::optional<sm::IntervalRecord> interval;  // its activity so far
   std::vector<char> map;                // with unknown obstacles: its own map, and its
   std::vector<char> trav;               //   traversable cells on it
@@ -268,12 +268,13 @@ class Runner {
   // One step of motion; false when nothing could move and no event fired (deadlock).
   bool move(double before, double t, std::uint64_t step) {
     bool progress = false;
-    const std::vector<std::optional<std::size_t>> waited = waits();
+    const auto waited = waits();
     std::vector<sm::Activity> did(robots_.size(), sm::Activity::waiting_for_task);
     for (std::size_t i = 0; i < robots_.size(); ++i) {
       RobotSim& r = robots_[i];
       r.blocked = false;
       r.yielded = false;
+      r.stuck = false;
       if (r.queue.empty()) continue;
       if (sensing_) learn(i, sm::scan_cells(truth_, r.pos, o_.seed, step, i));
       if (!r.driving && !r.following) start_leg(i);
@@ -289,10 +290,12 @@ class Runner {
                                            m_.robots[i].name, p.pos[0], p.pos[1], t));
       std::optional<sm::Point> detour;  // a standoff's detour point (spec/mission/steering.hpp)
       if (const auto j = sm::yields_to(m_, i, r.pos, p.pos, ways())) {
-        if (sm::standoff(i, *j, ways())) detour = steer(i, p);
+        const bool cornered = sm::standoff(i, *j, ways());
+        if (cornered) detour = steer(i, p);
         if (!detour) {
           r.yielded = true;
           r.yielded_to = *j;
+          r.stuck = cornered;
           ++result_.yields;
           did[i] = sm::Activity::waiting_for_robot;
           continue;
@@ -308,7 +311,6 @@ class Runner {
       progress = true;
       if (detour) {  // a fresh leg to the detour point; arrived, the robot routes anew
         ++result_.steers;
-        r.on_detour = true;
         r.leg = *detour;
         r.leg_is_task = false;
         r.route.clear();
@@ -338,10 +340,11 @@ class Runner {
     return progress || waits() != waited;
   }
 
-  // Per robot, the robot it yielded to at its last turn to move, if it did.
-  std::vector<std::optional<std::size_t>> waits() const {
-    std::vector<std::optional<std::size_t>> out;
-    for (const auto& r : robots_) out.push_back(r.yielded ? std::optional(r.yielded_to) : std::nullopt);
+  // Per robot, the robot it yielded to at its last turn to move and whether it was stuck, if it did.
+  std::vector<std::optional<std::pair<std::size_t, bool>>> waits() const {
+    std::vector<std::optional<std::pair<std::size_t, bool>>> out;
+    for (const auto& r : robots_)
+      out.push_back(r.yielded ? std::optional(std::make_pair(r.yielded_to, r.stuck)) : std::nullopt);
     return out;
   }
 
@@ -357,7 +360,6 @@ class Runner {
     }
     const auto w = ways();
     for (const sm::Point& e : sm::steer_candidates(m_, i, r.pos, r.leg, view)) {
-      if (r.on_detour && e == r.leg) continue;  // driving on to it is what yields
       const Proposal q = propose(o_, rp_, r, e, false);
       if (m_.world && sm::overlaps_obstacle(sensing_ ? truth_ : *m_.world, q.pos, radius)) continue;
       if (sm::yields_to(m_, i, r.pos, q.pos, w)) continue;
@@ -372,7 +374,6 @@ class Runner {
   // region nearest to it, a margin inside (so that the FSM's expected entry happens).
   void start_leg(std::size_t i) {
     RobotSim& r = robots_[i];
-    r.on_detour = false;
     const sm::Point task = m_.tasks[r.queue.front()].at;
     r.leg = task;
     r.leg_is_task = true;
@@ -479,7 +480,7 @@ class Runner {
     out.reserve(robots_.size());
     for (const auto& r : robots_)
       out.push_back({r.pos, !r.queue.empty(), r.leg,
-                     r.yielded ? std::optional<std::size_t>(r.yielded_to) : std::nullopt});
+                     r.yielded ? std::optional<std::size_t>(r.yielded_to) : std::nullopt, r.stuck});
     return out;
   }
 

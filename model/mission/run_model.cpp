@@ -37,7 +37,6 @@ struct Robot {
   bool waypoint_is_task = false;    // the leg's goal is the front task (else a region's point)
   std::vector<sm::Point> route;     // in a world: the leg's waypoints after this one
   bool following = false;           // driving to a later waypoint of the leg's route
-  bool on_detour = false;           // the leg is a steering detour (steering.hpp)
   bool sent = false;                // sent to a task at least once
   std::size_t sent_to = 0;          // the task it was sent to last
   double planned_m = 0.0;           // the cost model's travel of the tasks it was sent to
@@ -45,6 +44,7 @@ struct Robot {
   bool blocked = false;
   bool yielded = false;             // kept its state: its move would overlap another robot
   std::size_t yielded_to = 0;       // ... the robot it yielded to
+  bool stuck = false;               // ... in a standoff, finding no way aside
   std::optional<sm::IntervalRecord> open;  // its activity interval so far
   std::vector<char> map;            // with unknown obstacles: its own map, and its traversable
   std::vector<char> trav;           //   cells on it
@@ -154,7 +154,7 @@ std::vector<sm::RobotWay> ways(const World& w) {
   std::vector<sm::RobotWay> out;
   for (const Robot& r : w.robots)
     out.push_back({r.pos, !r.tasks.empty(), r.waypoint,
-                   r.yielded ? std::optional<std::size_t>(r.yielded_to) : std::nullopt});
+                   r.yielded ? std::optional<std::size_t>(r.yielded_to) : std::nullopt, r.stuck});
   return out;
 }
 
@@ -266,7 +266,6 @@ void route_leg(World& w, std::size_t i, const sm::Region* g) {
 
 void start_leg(World& w, std::size_t i) {
   Robot& r = w.robots[i];
-  r.on_detour = false;
   r.waypoint = w.m.tasks[r.tasks.front()].at;
   r.waypoint_is_task = true;
   if (!w.current) {
@@ -358,7 +357,6 @@ std::optional<Steered> steer(const World& w, std::size_t i) {
     view.traversable = w.sensing ? &r.trav : &w.m.world->traversable[i];
   }
   for (const sm::Point& e : sm::steer_candidates(w.m, i, r.pos, r.waypoint, view)) {
-    if (r.on_detour && e == r.waypoint) continue;  // going on to it is what yields
     Robot fresh = r;  // a new leg to e
     fresh.waypoint = e;
     fresh.on_leg = false;
@@ -374,13 +372,16 @@ std::optional<Steered> steer(const World& w, std::size_t i) {
 // Rule 3 for every robot; false when no robot moved.
 bool move_all(World& w, double t_from, double t, std::uint64_t step) {
   bool moved = false;
-  std::vector<std::optional<std::size_t>> waited;  // whom each robot yielded to, if it did
-  for (const Robot& r : w.robots) waited.push_back(r.yielded ? std::optional(r.yielded_to) : std::nullopt);
+  using Wait = std::optional<std::pair<std::size_t, bool>>;  // whom it yielded to, and stuck
+  const auto wait_of = [](const Robot& r) { return r.yielded ? Wait({r.yielded_to, r.stuck}) : Wait(); };
+  std::vector<Wait> waited;
+  for (const Robot& r : w.robots) waited.push_back(wait_of(r));
   std::vector<sm::Activity> did(w.robots.size(), sm::Activity::waiting_for_task);
   for (std::size_t i = 0; i < w.robots.size(); ++i) {
     Robot& r = w.robots[i];
     r.blocked = false;
     r.yielded = false;
+    r.stuck = false;
     if (r.tasks.empty()) continue;
     if (w.sensing) learn(w, i, sm::scan_cells(w.truth, r.pos, w.o.seed, step, i));
     if (!r.on_leg && !r.following) start_leg(w, i);
@@ -396,10 +397,12 @@ bool move_all(World& w, double t_from, double t, std::uint64_t step) {
                                          w.m.robots[i].name, mv.pos[0], mv.pos[1], t));
     std::optional<Steered> steered;
     if (const auto j = sm::yields_to(w.m, i, r.pos, mv.pos, ways(w))) {
-      if (sm::standoff(i, *j, ways(w))) steered = steer(w, i);
+      const bool cornered = sm::standoff(i, *j, ways(w));
+      if (cornered) steered = steer(w, i);
       if (!steered) {
         r.yielded = true;
         r.yielded_to = *j;
+        r.stuck = cornered;
         ++w.result.yields;
         did[i] = sm::Activity::waiting_for_robot;
         continue;
@@ -416,7 +419,6 @@ bool move_all(World& w, double t_from, double t, std::uint64_t step) {
     moved = true;
     if (steered) {  // the detour is the robot's leg now
       ++w.result.steers;
-      r.on_detour = true;
       r.waypoint = steered->detour;
       r.waypoint_is_task = false;
       r.route.clear();
@@ -442,7 +444,7 @@ bool move_all(World& w, double t_from, double t, std::uint64_t step) {
   account(w, did, t_from, t);
   for (std::size_t i = 0; i < w.robots.size(); ++i) {  // new yields are progress too
     const Robot& r = w.robots[i];
-    if (waited[i] != (r.yielded ? std::optional(r.yielded_to) : std::nullopt)) moved = true;
+    if (waited[i] != wait_of(r)) moved = true;
   }
   return moved;
 }

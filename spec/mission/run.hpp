@@ -59,11 +59,13 @@
 //     proposal overlapping an obstacle is a bug (std::logic_error). If the robot must give way
 //     (spec/mission/separation.hpp: yields_to, against the robots' current positions and ways,
 //     those before it in index order already moved), it *yields*: it keeps its whole state,
-//     fires nothing, and yields counts it. Else, if the entry events
+//     fires nothing, and yields counts it; unless it is in a standoff and steers
+//     (spec/mission/steering.hpp): then the steered proposal is its proposal, its leg the detour. Else, if the entry events
 //     of the move (entry_events) do not all fire in turn from q, the robot is blocked and keeps
 //     its whole state; otherwise it takes the proposal, travel grows by the distance moved, on
 //     arrival at a task that task leaves its queue (and the leg ends), and the entry events fire
-//     at t'. If no robot moved, the run ends in a deadlock, whose reason lists q's enabled events
+//     at t'. If no robot moved and no robot's yield (whom it yielded to, if anyone) changed,
+//     the run ends in a deadlock, whose reason lists q's enabled events
 //     and, per blocked robot, the entry events of its proposal q does not enable, then per
 //     yielding robot (index order) "robot B yields to robot A" (A = the robot it yielded to).
 //     After the step (the deadlocked one too), clearance_m of the positions must be >= 0 (else

@@ -33,6 +33,7 @@ struct RobotWay {
   bool has_way = false;  // it has a queued task (and so a waypoint)
   Point waypoint{};
   std::optional<std::size_t> yielded_to;  // the robot it yielded to in this step, if it did
+  bool stuck = false;  // ... and it was in a standoff with no way aside (spec/mission/steering.hpp)
 };
 
 // The distance from p to the segment [a, b] (to a when a == b): the point a + t (b - a),

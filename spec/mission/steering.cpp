@@ -71,6 +71,7 @@ bool standoff(std::size_t i, std::size_t j, std::span<const RobotWay> ways) {
   std::size_t k = j;
   for (std::size_t hops = 0; hops < ways.size(); ++hops) {
     if (!ways[k].yielded_to) return false;    // it moved, or is parked
+    if (k > i && !ways[k].stuck) return false;  // it only waited, in the step before
     if (*ways[k].yielded_to == i) return true;
     k = *ways[k].yielded_to;
   }

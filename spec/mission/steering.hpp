@@ -3,9 +3,12 @@
 // Field Histogram). Rule 3 (spec/mission/run.hpp) makes a robot *yield* when its move would
 // overlap another robot or cut an earlier robot's way. Waiting is right while the other robot
 // moves on; it is a *standoff* (`standoff`) when the other robot j waits for it: j yielded at
-// its last turn to move (in this step when j < i, in the step before when j > i) to i (two
-// robots head-on), or to a robot that waits for i in turn (the chain of yields, followed at most
-// once round the robots, reaches i). Then, instead of waiting, robot i steers. A robot parked
+// its last turn to move to i (two robots head-on), or to a robot that waits for i in turn (the
+// chain of yields, followed at most once round the robots, reaches i); where a robot k of the
+// chain comes after i in index order its yield was in the step before, and counts only when k was
+// *stuck* then (it yielded in a standoff of its own, finding no way aside). So head-on, the later
+// robot steers first, and the earlier one only when the later finds no way aside; an earlier
+// robot never steers because a later one merely waited for it. Then, instead of waiting, robot i steers. A robot parked
 // in the way (no queued task) is no standoff: the robot waits for it, and a run where nothing
 // else moves ends in the deadlock that names it (steering round it and re-planning straight
 // through it again would go back and forth until the time limit). (Head-on, the later robot steers first; only when it finds no way aside and yields
@@ -29,9 +32,7 @@
 // two robots that stopped touching, nearly in line, find both sideways sectors just blocked. Not
 // further back: a robot never retreats along its way, so a corridor too narrow to pass stays a
 // reported deadlock instead of a back-and-forth until the time limit.)
-// Rule 3 tries them in that order, except the detour point the robot is driving to already (on a
-// detour, going on to it is what made it yield): the candidate's detour point e_k becomes the
-// robot's leg (a fresh leg: no route, the controller takes e_k as a new waypoint), and the first whose
+// Rule 3 tries them in that order: the candidate's detour point e_k becomes the robot's leg (a fresh leg: no route, the controller takes e_k as a new waypoint), and the first whose
 // proposal passes the checks of rule 3 (no overlap with the world, no yield) is the robot's
 // move; `steers` counts it. Arrived at e_k, the robot starts its next leg from there (A* again).
 // No candidate passes: the robot yields, as before.
