@@ -96,7 +96,8 @@ int conform_missions(const SystemCampaign& c, Json* json_out) {
   const Json coverage{{"cases_by_kind", v.cases_by_kind},   {"run_endings", v.run_endings},
                       {"query_streams", v.query_streams},   {"stream_queries", v.stream_queries},
                       {"repeated_queries", v.repeated_queries}, {"plans_found", v.plans_found},
-                      {"plans_absent", v.plans_absent}};
+                      {"plans_absent", v.plans_absent}, {"runs_with_yields", v.runs_with_yields},
+                      {"runs_with_steering", v.runs_with_steering}};
   if (c.json) {
     Json j{{"agree", !r.counterexample}, {"cases_run", r.cases_run}, {"seed", c.seed}, {"campaign_seed", o.seed}};
     if (c.stats) j["coverage"] = coverage;
@@ -124,6 +125,7 @@ int conform_missions(const SystemCampaign& c, Json* json_out) {
     fmt::print("  planner query streams             {:>6} ({} queries, {} repeated)\n", v.query_streams,
                v.stream_queries, v.repeated_queries);
     fmt::print("  plans found / no plan             {:>6} / {}\n", v.plans_found, v.plans_absent);
+    fmt::print("  runs with a yield / a steering    {:>6} / {}\n", v.runs_with_yields, v.runs_with_steering);
   }
   return r.counterexample ? 1 : 0;
 }

@@ -43,6 +43,8 @@ struct Coverage {
   int repeated_queries = 0;                 // answered from the planner's memory
   int plans_found = 0;
   int plans_absent = 0;                     // no marked state reachable (compared too)
+  int runs_with_yields = 0;                 // a robot gave way to another (rule 3)
+  int runs_with_steering = 0;               // a robot steered round another (steering.hpp)
 };
 
 struct CampaignCounterexample {
