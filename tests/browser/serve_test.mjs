@@ -13,6 +13,9 @@ const dir = scratch('serve');
 const expected = JSON.parse(swarmcheck(bin, ['run', '--json']).out);
 
 const server = spawn(bin, ['serve', '--port', '0'], { stdio: ['ignore', 'pipe', 'inherit'] });
+// Whatever way this script ends (a skip when Chromium or playwright-core is missing, a failed
+// check), the server goes too: left running it holds ctest's output pipe until the timeout.
+process.on('exit', () => { if (server.exitCode === null) server.kill('SIGKILL'); });
 const port = await new Promise((resolve, reject) => {
   let text = '';
   server.stdout.on('data', (d) => { text += d; const m = /127\.0\.0\.1:(\d+)/.exec(text); if (m) resolve(Number(m[1])); });

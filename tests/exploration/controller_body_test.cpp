@@ -1,4 +1,5 @@
 // The Controller and Body components, and the servo saturation.
+#include <cstdlib>
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
@@ -13,6 +14,10 @@
 
 using namespace swarmcheck::exploration;
 namespace {
+
+// One seed for every run (an RC_PARAMS in the environment wins): CI and a developer see the
+// same cases.
+const bool kSeededExplorationControllerBodyTest = [] { return ::setenv("RC_PARAMS", "seed=17", 0) == 0; }();
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kPi = std::numbers::pi;

@@ -1,8 +1,12 @@
 // Planner properties on random missions over random supervisors, and the thesis mission.
+#include <cstdlib>
 #include <gtest/gtest.h>
 #include <rapidcheck/gtest.h>
 
 #include <memory>
+#include <optional>
+#include <stdexcept>
+#include <string>
 
 #include "conformance/mission/differential.hpp"
 #include "conformance/mission/generate.hpp"
@@ -11,6 +15,10 @@
 #include "swarmcheck/mission.hpp"
 
 namespace {
+
+// One seed for every run (an RC_PARAMS in the environment wins): CI and a developer see the
+// same cases.
+const bool kSeededMissionPlannerTest = [] { return ::setenv("RC_PARAMS", "seed=17", 0) == 0; }();
 
 namespace sm = swarmcheck::mission;
 using swarmcheck::impl::mission::Planner;
@@ -55,7 +63,13 @@ RC_GTEST_PROP(MissionPlanner, ReplanningFromAnyStateWithMovedRobotsIsExactAndCac
   q.from = *rc::gen::elementOf(m.fsm.states);
   for (auto& p : q.positions) p = {double(*rc::gen::inRange(-5, 6)), double(*rc::gen::inRange(-5, 6))};
   for (auto& t : q.travel) t = double(*rc::gen::inRange(0, 20));
-  if (const auto d = swarmcheck::conformance::mission::diff_plan(m, q)) RC_FAIL(*d);
+  std::optional<std::string> d;
+  try {
+    d = swarmcheck::conformance::mission::diff_plan(m, q);
+  } catch (const std::length_error&) {  // brute force's walk budget: too big for the oracle
+    RC_DISCARD("beyond the brute-force oracle");
+  }
+  if (d) RC_FAIL(*d);
   const auto exact = planner.plan(q);
   const auto hits = planner.cache_hits();
   const auto again = planner.plan(q);
