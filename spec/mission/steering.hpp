@@ -2,26 +2,23 @@
 // Local steering around robots, VFH-style (issue 14; the thesis's GoGoal drove with a Vector
 // Field Histogram). Rule 3 (spec/mission/run.hpp) makes a robot *yield* when its move would
 // overlap another robot or cut an earlier robot's way. Waiting is right while the other robot
-// moves on; it is a *standoff* (`standoff`) when the other robot j waits for it: j yielded at
+// moves on; it is a *standoff* (`standoff`) when the other robot j waits for i: j yielded at
 // its last turn to move to i (two robots head-on), or to a robot that waits for i in turn (the
-// chain of yields, followed at most once round the robots, reaches i); where a robot k of the
+// chain of yields, followed at most once round the robots, reaches i). Where a robot k of the
 // chain comes after i in index order its yield was in the step before, and counts only when k was
 // *stuck* then (it yielded in a standoff of its own, finding no way aside). So head-on, the later
 // robot steers first, and the earlier one only when the later finds no way aside; an earlier
-// robot never steers because a later one merely waited for it. Then, instead of waiting, robot i steers. A robot parked
-// in the way (no queued task) is no standoff: the robot waits for it, and a run where nothing
-// else moves ends in the deadlock that names it (steering round it and re-planning straight
-// through it again would go back and forth until the time limit). (Head-on, the later robot steers first; only when it finds no way aside and yields
-// does the earlier one, in the next step, steer too.)
+// robot never steers because a later one merely waited for it. In a standoff robot i steers
+// instead of waiting. A robot parked in the way (no queued task) is no standoff: the robot waits
+// for it, and a run where nothing else moves ends in the deadlock that names it (steering round
+// it and re-planning straight through it again would go back and forth until the time limit).
 //
 // Binary polar histogram. Around the robot (at p, radius r) sector k of kSteerSectors points at
 // a_k = 2 pi k / kSteerSectors (world frame). Sector k is *free* when the robot's disk swept
 // along the segment s_k from p to e_k = p + kSteerLookahead_m (cos a_k, sin a_k) meets nothing
 // the robot knows of:
-//  - every other robot j at q_j: distance_to_segment(q_j, p, e_k) >= r + r_j + kSteerPad_m (its
-//    disk, enlarged by the robot's radius and the pad as VFH+ does), or the sector leads away
-//    from j: its angle to q_j - p is at least 100 degrees (cos <= kSteerAwayCos; with the
-//    unicycle's heading error below 10 degrees the robot then never comes closer to j);
+//  - every other robot j at q_j: distance_to_segment(q_j, p, e_k) >= r + r_j (the two disks
+//    never overlap along s_k; rule 3 still checks the move itself every step);
 //  - in a world, on the robot's map (the world's map, or its own with unknown obstacles): e_k's
 //    disk stays in the grid's rectangle with kSteerPad_m to spare, every occupied square is at
 //    distance >= r + kSteerPad_m from s_k (segment-to-square distance, exact), and e_k lies in a
@@ -32,10 +29,11 @@
 // two robots that stopped touching, nearly in line, find both sideways sectors just blocked. Not
 // further back: a robot never retreats along its way, so a corridor too narrow to pass stays a
 // reported deadlock instead of a back-and-forth until the time limit.)
-// Rule 3 tries them in that order: the candidate's detour point e_k becomes the robot's leg (a fresh leg: no route, the controller takes e_k as a new waypoint), and the first whose
-// proposal passes the checks of rule 3 (no overlap with the world, no yield) is the robot's
-// move; `steers` counts it. Arrived at e_k, the robot starts its next leg from there (A* again).
-// No candidate passes: the robot yields, as before.
+// Rule 3 tries them in that order: the candidate's detour point e_k becomes the robot's leg (a
+// fresh leg: no route, the controller takes e_k as a new waypoint), and the first whose proposal
+// passes the checks of rule 3 (no overlap with the world, no yield) is the robot's move; `steers`
+// counts it. Arrived at e_k, the robot starts its next leg from there (A* again). No candidate
+// passes: the robot yields, as before.
 #include <cstddef>
 #include <span>
 #include <vector>
@@ -48,7 +46,6 @@ namespace swarmcheck::mission {
 inline constexpr std::size_t kSteerSectors = 72;   // 5 degrees each
 inline constexpr double kSteerLookahead_m = 0.5;   // the length of a detour
 inline constexpr double kSteerPad_m = 0.05;        // the unicycle's departures from the segment
-inline constexpr double kSteerAwayCos = -0.17364817766693033;  // cos(100 degrees)
 
 // The distance from the segment [a, b] to the closed axis-aligned square [lo, hi] (0 when they
 // meet: Liang-Barsky clipping; otherwise the least of the endpoints' distances to the square and
