@@ -1,6 +1,7 @@
 #include "impl/exploration/environment.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <thread>
 
 #include <tbb/info.h>
@@ -15,6 +16,10 @@ constexpr int32_t kPrefetchRangeMax = 2;    // s_range up to which windows are p
 // Below this many window cells in a stage (robots x (2 s + 1)^2), cutting strips and handing them
 // to threads costs more than it saves (bench_exploration, threads 1 against all).
 constexpr int64_t kParallelMinWindowCells = int64_t{1} << 15;
+
+int64_t nanoseconds_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now() - t0).count();
+}
 
 int32_t threads_of(const swarmcheck::exploration::ExplorationOptions& o) {
   if (o.threads > 0) return o.threads;
@@ -71,24 +76,35 @@ int32_t Environment::strips_for(std::size_t robots) const {
 // 4 s_range around the rows robots start on, measured no faster: twice the edge robots.)
 int64_t Environment::plan(spec::EnvironmentState& env, LazyGrid& grid) const {
   const int32_t strips = strips_for(env.robots.size());
-  if (strips > 1) {
-    rows_.resize(env.robots.size());
-    for (std::size_t r = 0; r < rows_.size(); ++r) rows_[r] = env.robots[r].cell[0];
-    if (strips_.build(rows_, cfg_.scenario.map_size, 2 * cfg_.scenario.params.s_range, strips) > 1) {
-      for (StripPlanning& p : strip_planning_) p.decisions.clear();
-      // The robots' records are written after the stage: threads in step through the robot indices,
-      // writing neighbouring records as they went, would fight over their cache lines.
-      const int64_t newly = strips_.run(arena_, strip_planning_, [&](int32_t r, StripPlanning& p) {
-        int64_t n = 0;
-        p.decisions.emplace_back(r, spec::decide_on_grid(cfg_, env, grid, r, p.candidates, n));
-        return n;
-      }, [&](int32_t r) { prefetch(env.robots[static_cast<std::size_t>(r)].cell); });
-      for (const StripPlanning& p : strip_planning_)
-        for (const auto& [r, d] : p.decisions) spec::apply_decision_to_robot(cfg_, env, r, d);
-      return newly;
-    }
+  if (strips <= 1) return plan_sequential(env, grid);
+  if (!tuned()) {
+    if (const auto newly = plan_parallel(env, grid, strips)) return *newly;
+    return plan_sequential(env, grid);
   }
-  return plan_sequential(env, grid);
+  const auto t0 = std::chrono::steady_clock::now();
+  std::optional<int64_t> newly;
+  if (plan_tuner_.next_parallel()) newly = plan_parallel(env, grid, strips);
+  const bool parallel = newly.has_value();
+  if (!parallel) newly = plan_sequential(env, grid);
+  plan_tuner_.record(parallel, nanoseconds_since(t0));
+  return *newly;
+}
+
+std::optional<int64_t> Environment::plan_parallel(spec::EnvironmentState& env, LazyGrid& grid, int32_t strips) const {
+  rows_.resize(env.robots.size());
+  for (std::size_t r = 0; r < rows_.size(); ++r) rows_[r] = env.robots[r].cell[0];
+  if (strips_.build(rows_, cfg_.scenario.map_size, 2 * cfg_.scenario.params.s_range, strips) <= 1) return std::nullopt;
+  for (StripPlanning& p : strip_planning_) p.decisions.clear();
+  // The robots' records are written after the stage: threads in step through the robot indices,
+  // writing neighbouring records as they went, would fight over their cache lines.
+  const int64_t newly = strips_.run(arena_, strip_planning_, [&](int32_t r, StripPlanning& p) {
+    int64_t n = 0;
+    p.decisions.emplace_back(r, spec::decide_on_grid(cfg_, env, grid, r, p.candidates, n));
+    return n;
+  }, [&](int32_t r) { prefetch(env.robots[static_cast<std::size_t>(r)].cell); });
+  for (const StripPlanning& p : strip_planning_)
+    for (const auto& [r, d] : p.decisions) spec::apply_decision_to_robot(cfg_, env, r, d);
+  return newly;
 }
 
 void Environment::prefetch(CellIndex c) const {
@@ -114,17 +130,32 @@ int64_t Environment::plan_sequential(spec::EnvironmentState& env, LazyGrid& grid
 void Environment::deposit(const spec::EnvironmentState& env, LazyGrid& grid) const {
   const std::size_t n = env.deposit_centre.size();
   const int32_t strips = env.tick == 0 ? 1 : strips_for(n);
-  if (strips > 1) {
-    rows_.resize(n);
-    for (std::size_t r = 0; r < n; ++r) rows_[r] = env.deposit_centre[r][0];
-    if (strips_.build(rows_, cfg_.scenario.map_size, 2 * cfg_.scenario.params.s_range, strips) > 1) {
-      strips_.run(arena_, no_scratch_, [&](int32_t r, char&) {
-        spec::deposit_around(cfg_, grid, env.deposit_centre[static_cast<std::size_t>(r)], env.tick);
-        return int64_t{0};
-      }, [&](int32_t r) { prefetch(env.deposit_centre[static_cast<std::size_t>(r)]); });
-      return;
-    }
+  if (strips <= 1) return deposit_sequential(env, grid);
+  if (!tuned()) {
+    if (!deposit_parallel(env, grid, strips)) deposit_sequential(env, grid);
+    return;
   }
+  const auto t0 = std::chrono::steady_clock::now();
+  const bool parallel = deposit_tuner_.next_parallel() && deposit_parallel(env, grid, strips);
+  if (!parallel) deposit_sequential(env, grid);
+  deposit_tuner_.record(parallel, nanoseconds_since(t0));
+}
+
+bool Environment::deposit_parallel(const spec::EnvironmentState& env, LazyGrid& grid, int32_t strips) const {
+  const std::size_t n = env.deposit_centre.size();
+  rows_.resize(n);
+  for (std::size_t r = 0; r < n; ++r) rows_[r] = env.deposit_centre[r][0];
+  if (strips_.build(rows_, cfg_.scenario.map_size, 2 * cfg_.scenario.params.s_range, strips) <= 1) return false;
+  strips_.run(arena_, no_scratch_, [&](int32_t r, char&) {
+    spec::deposit_around(cfg_, grid, env.deposit_centre[static_cast<std::size_t>(r)], env.tick);
+    return int64_t{0};
+  }, [&](int32_t r) { prefetch(env.deposit_centre[static_cast<std::size_t>(r)]); });
+  return true;
+}
+
+void Environment::deposit_sequential(const spec::EnvironmentState& env, LazyGrid& grid) const {
+  const std::size_t n = env.deposit_centre.size();
+  for (std::size_t r = 0; r < std::min(n, kPrefetchAhead); ++r) prefetch(env.deposit_centre[r]);
   for (std::size_t r = 0; r < n; ++r) {
     if (r + kPrefetchAhead < n) prefetch(env.deposit_centre[r + kPrefetchAhead]);
     spec::deposit_around(cfg_, grid, env.deposit_centre[r], env.tick);

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "impl/exploration/lazy_grid.hpp"
+#include "impl/exploration/stage_tuner.hpp"
 #include "impl/exploration/strip_schedule.hpp"
 #include "spec/exploration/environment_step.hpp"
 #include "swarmcheck/exploration.hpp"
@@ -42,6 +43,14 @@ class Environment {
 
  private:
   int64_t plan_sequential(swarmcheck::exploration::EnvironmentState& env, LazyGrid& grid) const;
+  // On the strips; nullopt (nothing done) when the robots give only one strip.
+  std::optional<int64_t> plan_parallel(swarmcheck::exploration::EnvironmentState& env, LazyGrid& grid,
+                                       int32_t strips) const;
+  void deposit_sequential(const swarmcheck::exploration::EnvironmentState& env, LazyGrid& grid) const;
+  bool deposit_parallel(const swarmcheck::exploration::EnvironmentState& env, LazyGrid& grid, int32_t strips) const;
+  // Whether strips or one thread is chosen by timing both (StageTuner): unless the options fix
+  // the threshold (parallel_min_robots > 0), which the tests use to force the strips.
+  bool tuned() const { return options_.parallel_min_robots == 0; }
   // How many strips a stage over `robots` robots is worth cutting (1: do it on this thread).
   int32_t strips_for(std::size_t robots) const;
   void prefetch(CellIndex c) const;
@@ -61,6 +70,7 @@ class Environment {
   };
   mutable std::vector<StripPlanning> strip_planning_;
   mutable std::vector<char> no_scratch_;
+  mutable StageTuner plan_tuner_, deposit_tuner_;
   // Last: its initialisation runs the deposit stage, which uses the members above.
   swarmcheck::exploration::EnvironmentState env_;
 };

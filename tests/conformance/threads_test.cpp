@@ -12,6 +12,7 @@
 #include "spec/exploration/rng.hpp"
 #include "spec/exploration/scenario.hpp"
 #include "swarmcheck/exploration.hpp"
+#include "impl/exploration/stage_tuner.hpp"
 #include "tests/conformance/record_difference.hpp"
 
 using namespace swarmcheck;
@@ -100,4 +101,76 @@ TEST(Threads, StripPlanningOfThousandsOfRobotsEqualsTheModel) {
     m.step();
     ASSERT_EQ(first_difference_text(m.record(), a.record()), "") << a.steps();
   }
+}
+
+// With the default options the Environment times the strips against one thread and runs the
+// faster (impl/exploration/stage_tuner.hpp); its first stages alternate between the two, so one
+// run mixes both, step by step, and must still be the model's bits.
+TEST(Threads, TunedRunsThatMixStripsAndOneThreadStepByStepEqualTheModel) {
+  Scenario s = default_scenario();
+  s.map_size = 64;
+  s.obstacles.clear();
+  s.robots.clear();
+  for (int32_t i = 0; i < 64; i += 2)
+    for (int32_t j = 0; j < 64; j += 3) s.robots.push_back({i + 0.5, j + 0.5});   // 704 robots
+  s.params.s_range = 3;   // 704 x 7^2 window cells: over the threshold for strips
+  s.mode = Mode::abstract;
+  s.rule = RuleSet::stochastic;
+  s.max_steps = 70;       // the trials, then past the first re-probe
+  ExplorationOptions tuned;
+  tuned.threads = 4;
+  Exploration a(s, tuned);
+  swarmcheck::model::exploration::ExplorationModel m(s);
+  while (!m.done()) {
+    a.step();
+    m.step();
+    ASSERT_EQ(first_difference_text(m.record(), a.record()), "") << a.steps();
+  }
+}
+
+namespace {
+using swarmcheck::impl::exploration::StageTuner;
+
+// The modes a tuner asks for over `stages` stages, each taking what `ns` says.
+std::string tuner_choices(StageTuner& t, int stages, int64_t parallel_ns, int64_t sequential_ns) {
+  std::string out;
+  for (int k = 0; k < stages; ++k) {
+    const bool p = t.next_parallel();
+    out += p ? 'P' : 'S';
+    t.record(p, p ? parallel_ns : sequential_ns);
+  }
+  return out;
+}
+}  // namespace
+
+TEST(StageTuner, AlternatesForItsTrialsThenRunsTheFasterModeAndReprobesTheOtherEvery32Stages) {
+  StageTuner t;
+  const std::string trials = tuner_choices(t, 2 * StageTuner::kTrials, 900, 1000);
+  EXPECT_EQ(trials, "PSPSPS");
+  EXPECT_TRUE(t.faster_is_parallel());
+  const std::string after = tuner_choices(t, 64, 900, 1000);
+  EXPECT_EQ(std::count(after.begin(), after.end(), 'S'), 2) << after;
+  EXPECT_EQ(after[31], 'S') << after;
+  EXPECT_EQ(after[63], 'S') << after;
+}
+
+TEST(StageTuner, SwitchesToOneThreadWhenTheStripsBecomeSlowerAndBackWhenTheyRecover) {
+  StageTuner t;
+  tuner_choices(t, 2 * StageTuner::kTrials, 900, 1000);
+  ASSERT_TRUE(t.faster_is_parallel());
+  // The strips slow down (the machine's other core got busy): seen by the stages that run them.
+  std::string slow = tuner_choices(t, 10, 3000, 1000);
+  EXPECT_FALSE(t.faster_is_parallel()) << slow;
+  const std::string settled = tuner_choices(t, 31, 3000, 1000);
+  EXPECT_EQ(std::count(settled.begin(), settled.end(), 'P'), 1) << settled;   // the one re-probe
+  // They recover: the re-probes see it (a median needs two of the last three).
+  tuner_choices(t, 3 * StageTuner::kReprobeEvery, 500, 1000);
+  EXPECT_TRUE(t.faster_is_parallel());
+}
+
+TEST(StageTuner, OneSlowOutlierDoesNotFlipTheChoice) {
+  StageTuner t;
+  tuner_choices(t, 2 * StageTuner::kTrials, 900, 1000);
+  t.record(true, 1'000'000);   // a stage the operating system interrupted
+  EXPECT_TRUE(t.faster_is_parallel());
 }
