@@ -16,6 +16,7 @@ std::string_view family_name(Family f) {
     case Family::standard: return "standard";
     case Family::long_horizon: return "long_horizon";
     case Family::edge_poses: return "edge_poses";
+    case Family::crowds: return "crowds";
   }
   return "?";
 }
@@ -149,17 +150,62 @@ ExplorationCase gen_edge_poses(int64_t max_steps) {
   return c;
 }
 
+// A few tight crowds of robots on an otherwise empty map: sparse over the map, so that the
+// parallel path takes the band schedule (impl/exploration/band_schedule.hpp), but dense within a
+// crowd, so that robots form chains within reach of each other, in any index order; the strips'
+// edges fall at robot-count quantiles of the rows, so often through a crowd.
+ExplorationCase gen_crowds(int64_t max_steps) {
+  ExplorationCase c;
+  c.family = Family::crowds;
+  Scenario& s = c.scenario;
+  s = default_scenario();
+  s.params = default_params();
+  s.params.s_range = *rc::gen::weightedOneOf<int32_t>({{3, rc::gen::just(1)}, {1, rc::gen::just(2)}});
+  s.map_size = *rc::gen::inRange<int32_t>(24, 65);
+  s.obstacles.clear();
+  s.robots.clear();
+  const int32_t n = s.map_size;
+  const int32_t side_cells = 4 * s.params.s_range + 1;   // the band schedule's conflict window
+  const int32_t robots_max = std::max(2, n * n / (side_cells * side_cells));
+  std::vector<char> taken(static_cast<std::size_t>(n * n), 0);
+  const int32_t crowds = *rc::gen::inRange(1, 5);
+  for (int32_t k = 0; k < crowds; ++k) {
+    const int32_t width = *rc::gen::inRange(2, 7);
+    const int32_t i0 = *rc::gen::inRange(0, n - width), j0 = *rc::gen::inRange(0, n - width);
+    const int32_t size = *rc::gen::inRange(3, width * width + 1);
+    for (int32_t m = 0; m < size && static_cast<int32_t>(s.robots.size()) < robots_max; ++m) {
+      const int32_t i = i0 + *rc::gen::inRange(0, width), j = j0 + *rc::gen::inRange(0, width);
+      char& t = taken[static_cast<std::size_t>(i * n + j)];
+      if (t) continue;
+      t = 1;
+      s.robots.push_back(centre_of(CellIndex{i, j}, s.cell_size));
+    }
+  }
+  // Index order unrelated to position: a crowd's robots spread over the index range.
+  for (std::size_t k = s.robots.size(); k > 1; --k)
+    std::swap(s.robots[k - 1], s.robots[*rc::gen::inRange<std::size_t>(0, k)]);
+  s.rule = *rc::gen::elementOf(all_rule_sets());
+  s.mode = *rc::gen::weightedOneOf<Mode>({{3, rc::gen::just(Mode::abstract)}, {1, rc::gen::just(Mode::cosim)}});
+  s.seed = *rc::gen::arbitrary<uint64_t>();
+  s.params.ertu = *rc::gen::element(0.1, 0.01);
+  s.max_steps = s.mode == Mode::cosim ? 3 * max_steps : max_steps;
+  return c;
+}
+
 }  // namespace
 
 rc::Gen<ExplorationCase> gen_exploration_case(int64_t max_steps) {
   return rc::gen::exec([max_steps] {
     const auto family = *rc::gen::weightedOneOf<Family>({{16, rc::gen::just(Family::standard)},
                                                          {2, rc::gen::just(Family::long_horizon)},
-                                                         {3, rc::gen::just(Family::edge_poses)}});
+                                                         {3, rc::gen::just(Family::edge_poses)},
+                                                         {3, rc::gen::just(Family::crowds)}});
     ExplorationCase c = family == Family::standard       ? gen_standard(max_steps)
                         : family == Family::long_horizon ? gen_long_horizon()
+                        : family == Family::crowds       ? gen_crowds(max_steps)
                                                          : gen_edge_poses(max_steps);
-    c.grouped = *rc::gen::arbitrary<bool>();
+    // Crowds are there for the parallel path.
+    c.grouped = family == Family::crowds || *rc::gen::arbitrary<bool>();
     validate(c.scenario);
     return c;
   });

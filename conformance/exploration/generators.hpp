@@ -11,6 +11,9 @@
 //   edge_poses:    robots starting off the cell centres: on a cell's lower edge, a few ulps
 //                  below the next edge, at -0.0, tiny offsets; cosim mostly, so that controllers
 //                  and bodies run from them (and reach headings around +-pi)
+//   crowds:        a few tight crowds on an empty map: sparse overall (the parallel path's band
+//                  schedule) but chains of robots within reach of each other, in any index order,
+//                  often across the strips' edges; always on the parallel path
 // Every family draws whether the impl plans and deposits in parallel (over strips) even for few robots.
 #include <rapidcheck.h>
 
@@ -22,7 +25,7 @@
 
 namespace swarmcheck::conformance::exploration {
 
-enum class Family { standard, long_horizon, edge_poses };
+enum class Family { standard, long_horizon, edge_poses, crowds };
 std::string_view family_name(Family f);
 
 struct ExplorationCase {

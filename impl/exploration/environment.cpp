@@ -91,17 +91,28 @@ int64_t Environment::plan(spec::EnvironmentState& env, LazyGrid& grid) const {
 }
 
 std::optional<int64_t> Environment::plan_parallel(spec::EnvironmentState& env, LazyGrid& grid, int32_t strips) const {
-  rows_.resize(env.robots.size());
-  for (std::size_t r = 0; r < rows_.size(); ++r) rows_[r] = env.robots[r].cell[0];
-  if (strips_.build(rows_, cfg_.scenario.map_size, 2 * cfg_.scenario.params.s_range, strips) <= 1) return std::nullopt;
-  for (StripPlanning& p : strip_planning_) p.decisions.clear();
-  // The robots' records are written after the stage: threads in step through the robot indices,
-  // writing neighbouring records as they went, would fight over their cache lines.
-  const int64_t newly = strips_.run(arena_, strip_planning_, [&](int32_t r, StripPlanning& p) {
+  const int32_t reach = 2 * cfg_.scenario.params.s_range;
+  const auto decide = [&](int32_t r, StripPlanning& p) {
     int64_t n = 0;
     p.decisions.emplace_back(r, spec::decide_on_grid(cfg_, env, grid, r, p.candidates, n));
     return n;
-  }, [&](int32_t r) { prefetch(env.robots[static_cast<std::size_t>(r)].cell); });
+  };
+  const auto ahead = [&](int32_t r) { prefetch(env.robots[static_cast<std::size_t>(r)].cell); };
+  cells_.resize(env.robots.size());
+  for (std::size_t r = 0; r < cells_.size(); ++r) cells_[r] = env.robots[r].cell;
+  int64_t newly = 0;
+  if (band_.build(cells_, cfg_.scenario.map_size, reach, strips)) {
+    for (StripPlanning& p : strip_planning_) p.decisions.clear();
+    newly = band_.run(arena_, strip_planning_, decide, ahead);
+  } else {
+    rows_.resize(env.robots.size());
+    for (std::size_t r = 0; r < rows_.size(); ++r) rows_[r] = cells_[r][0];
+    if (strips_.build(rows_, cfg_.scenario.map_size, reach, strips) <= 1) return std::nullopt;
+    for (StripPlanning& p : strip_planning_) p.decisions.clear();
+    newly = strips_.run(arena_, strip_planning_, decide, ahead);
+  }
+  // The robots' records are written after the stage: threads in step through the robot indices,
+  // writing neighbouring records as they went, would fight over their cache lines.
   for (const StripPlanning& p : strip_planning_)
     for (const auto& [r, d] : p.decisions) spec::apply_decision_to_robot(cfg_, env, r, d);
   return newly;
@@ -142,14 +153,21 @@ void Environment::deposit(const spec::EnvironmentState& env, LazyGrid& grid) con
 }
 
 bool Environment::deposit_parallel(const spec::EnvironmentState& env, LazyGrid& grid, int32_t strips) const {
+  const int32_t reach = 2 * cfg_.scenario.params.s_range;
+  const auto deposit = [&](int32_t r, char&) {
+    spec::deposit_around(cfg_, grid, env.deposit_centre[static_cast<std::size_t>(r)], env.tick);
+    return int64_t{0};
+  };
+  const auto ahead = [&](int32_t r) { prefetch(env.deposit_centre[static_cast<std::size_t>(r)]); };
+  if (band_.build(env.deposit_centre, cfg_.scenario.map_size, reach, strips)) {
+    band_.run(arena_, no_scratch_, deposit, ahead);
+    return true;
+  }
   const std::size_t n = env.deposit_centre.size();
   rows_.resize(n);
   for (std::size_t r = 0; r < n; ++r) rows_[r] = env.deposit_centre[r][0];
-  if (strips_.build(rows_, cfg_.scenario.map_size, 2 * cfg_.scenario.params.s_range, strips) <= 1) return false;
-  strips_.run(arena_, no_scratch_, [&](int32_t r, char&) {
-    spec::deposit_around(cfg_, grid, env.deposit_centre[static_cast<std::size_t>(r)], env.tick);
-    return int64_t{0};
-  }, [&](int32_t r) { prefetch(env.deposit_centre[static_cast<std::size_t>(r)]); });
+  if (strips_.build(rows_, cfg_.scenario.map_size, reach, strips) <= 1) return false;
+  strips_.run(arena_, no_scratch_, deposit, ahead);
   return true;
 }
 

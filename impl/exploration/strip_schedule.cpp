@@ -4,25 +4,32 @@
 
 namespace swarmcheck::impl::exploration {
 
-int32_t StripSchedule::build(std::span<const int32_t> rows, int32_t map_rows, int32_t reach, int32_t strips) {
+int32_t cut_strips(std::span<const int32_t> rows, int32_t map_rows, int32_t reach, int32_t strips,
+                   std::vector<int32_t>& row_count, std::vector<int32_t>& lo) {
   const int64_t n = static_cast<int64_t>(rows.size());
   const int64_t min_height = int64_t{reach} + 1;
   // Strip boundaries at robot-count quantiles of the rows, each strip at least min_height rows.
-  row_count_.assign(static_cast<std::size_t>(map_rows), 0);
-  for (int32_t i : rows) ++row_count_[static_cast<std::size_t>(i)];
-  lo_.clear();
-  lo_.push_back(0);
+  row_count.assign(static_cast<std::size_t>(map_rows), 0);
+  for (int32_t i : rows) ++row_count[static_cast<std::size_t>(i)];
+  lo.clear();
+  lo.push_back(0);
   const int64_t per_strip = std::max<int64_t>(1, (n + strips - 1) / std::max(1, strips));
   int64_t in_strip = 0;
   for (int32_t i = 0; i < map_rows; ++i) {
-    if (in_strip >= per_strip && i - lo_.back() >= min_height && map_rows - i >= min_height) {
-      lo_.push_back(i);
+    if (in_strip >= per_strip && i - lo.back() >= min_height && map_rows - i >= min_height) {
+      lo.push_back(i);
       in_strip = 0;
     }
-    in_strip += row_count_[static_cast<std::size_t>(i)];
+    in_strip += row_count[static_cast<std::size_t>(i)];
   }
-  count_ = static_cast<int32_t>(lo_.size());
-  lo_.push_back(map_rows);
+  const auto count = static_cast<int32_t>(lo.size());
+  lo.push_back(map_rows);
+  return count;
+}
+
+int32_t StripSchedule::build(std::span<const int32_t> rows, int32_t map_rows, int32_t reach, int32_t strips) {
+  const int64_t n = static_cast<int64_t>(rows.size());
+  count_ = cut_strips(rows, map_rows, reach, strips, row_count_, lo_);
   if (count_ > capacity_) {
     strips_ = std::make_unique<Strip[]>(static_cast<std::size_t>(count_));
     capacity_ = count_;

@@ -30,6 +30,12 @@
 
 namespace swarmcheck::impl::exploration {
 
+// Cuts the rows [0, map_rows) into at most `strips` strips of at least reach + 1 rows each,
+// balanced by the number of robots (rows[r] is robot r's row). Fills row_count (robots per row)
+// and lo (each strip's first row, then map_rows); returns the number of strips.
+int32_t cut_strips(std::span<const int32_t> rows, int32_t map_rows, int32_t reach, int32_t strips,
+                   std::vector<int32_t>& row_count, std::vector<int32_t>& lo);
+
 class StripSchedule {
  public:
   // Cuts the rows [0, map_rows) into at most `strips` strips of at least reach + 1 rows each,
