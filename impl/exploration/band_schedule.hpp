@@ -18,7 +18,9 @@
 // 1)^2 / cells) above kMaxNeighbours, or more than 1 / kMaxDeferredShare of the robots deferred
 // (and more than kMinDeferredCap).
 // There the strip schedule (waiting at the edges) is the parallel alternative.
+#include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/partitioner.h>
 #include <tbb/task_arena.h>
 
 #include <algorithm>
@@ -70,6 +72,9 @@ class BandSchedule {
   std::vector<int32_t> queue_, deferred_;        // the closure's work list; deferred, index order
   std::vector<int64_t> start_;                   // each strip's first position in members_
   std::vector<int32_t> members_;                 // phase 1: strip by strip, index order
+  // Replays the last run's mapping of strips to threads, so that a strip's cells stay in the
+  // cache of the core that worked on them (robots move little from step to step).
+  tbb::affinity_partitioner affinity_;
   std::vector<int64_t> sums_, fill_;             // per strip: the last run's sums; a cursor
 };
 
@@ -79,12 +84,14 @@ int64_t BandSchedule::run(tbb::task_arena& arena, std::vector<Scratch>& scratch,
   std::vector<int64_t>& sums = sums_;
   sums.assign(static_cast<std::size_t>(count_), 0);
   arena.execute([&] {
-    tbb::parallel_for(int32_t{0}, count_, [&](int32_t k) {
-      const auto b = static_cast<std::size_t>(start_[static_cast<std::size_t>(k)]);
-      const auto e = static_cast<std::size_t>(start_[static_cast<std::size_t>(k) + 1]);
-      sums[static_cast<std::size_t>(k)] =
-          run_list(std::span<const int32_t>(members_).subspan(b, e - b), scratch[static_cast<std::size_t>(k)], work, ahead);
-    });
+    tbb::parallel_for(tbb::blocked_range<int32_t>(0, count_, 1), [&](const tbb::blocked_range<int32_t>& range) {
+      for (int32_t k = range.begin(); k < range.end(); ++k) {
+        const auto b = static_cast<std::size_t>(start_[static_cast<std::size_t>(k)]);
+        const auto e = static_cast<std::size_t>(start_[static_cast<std::size_t>(k) + 1]);
+        sums[static_cast<std::size_t>(k)] = run_list(std::span<const int32_t>(members_).subspan(b, e - b),
+                                                     scratch[static_cast<std::size_t>(k)], work, ahead);
+      }
+    }, affinity_);
   });
   int64_t total = run_list(std::span<const int32_t>(deferred_), scratch[0], work, ahead);
   for (int64_t s : sums) total += s;

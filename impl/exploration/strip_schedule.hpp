@@ -16,7 +16,9 @@
 // number of threads, one included, however the tasks are scheduled.
 //
 // The buffers are reused from step to step: no allocation once the sizes settle.
+#include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/partitioner.h>
 #include <tbb/task_arena.h>
 
 #include <algorithm>
@@ -98,6 +100,7 @@ class StripSchedule {
   void wait_for(int32_t k, Side edge, int32_t index, std::vector<Scratch>& scratch, Work& work, Ahead& ahead);
 
   int32_t count_ = 0;
+  tbb::affinity_partitioner affinity_;   // strip k on the thread that had it last time (its cells' cache)
   std::unique_ptr<Strip[]> strips_;
   int32_t capacity_ = 0;
   std::vector<int32_t> row_count_, lo_;   // robots per row; first row of each strip (+ map_rows)
@@ -155,18 +158,20 @@ template <class Scratch, class Work, class Ahead>
 int64_t StripSchedule::run(tbb::task_arena& arena, std::vector<Scratch>& scratch, Work&& work, Ahead&& ahead) {
   if (scratch.size() < static_cast<std::size_t>(count_)) scratch.resize(static_cast<std::size_t>(count_));
   arena.execute([&] {
-    tbb::parallel_for(int32_t{0}, count_, [&](int32_t k) {
-      Strip& s = strips_[static_cast<std::size_t>(k)];
-      int spins = 0;
-      for (;;) {   // a helper may hold it for a while; this task finishes the rest
-        const uint32_t seen = s.epoch.load(std::memory_order_acquire);
-        if (try_hold(s)) break;
-        wait_change(s, seen, spins);
+    tbb::parallel_for(tbb::blocked_range<int32_t>(0, count_, 1), [&](const tbb::blocked_range<int32_t>& range) {
+      for (int32_t k = range.begin(); k < range.end(); ++k) {
+        Strip& s = strips_[static_cast<std::size_t>(k)];
+        int spins = 0;
+        for (;;) {   // a helper may hold it for a while; this task finishes the rest
+          const uint32_t seen = s.epoch.load(std::memory_order_acquire);
+          if (try_hold(s)) break;
+          wait_change(s, seen, spins);
+        }
+        for (int64_t q = s.pos; q < std::min(s.end, s.pos + kAhead); ++q) ahead(members_[static_cast<std::size_t>(q)]);
+        while (s.pos < s.end) do_next(k, scratch, work, ahead);
+        release(s);
       }
-      for (int64_t q = s.pos; q < std::min(s.end, s.pos + kAhead); ++q) ahead(members_[static_cast<std::size_t>(q)]);
-      while (s.pos < s.end) do_next(k, scratch, work, ahead);
-      release(s);
-    });
+    }, affinity_);
   });
   int64_t total = 0;
   for (int32_t k = 0; k < count_; ++k) total += strips_[static_cast<std::size_t>(k)].sum;
