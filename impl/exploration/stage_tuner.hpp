@@ -1,14 +1,17 @@
 #pragma once
-// Chooses, stage by stage, between the parallel strips (strip_schedule.hpp) and one thread by
-// timing both. The two give the same bits (tests/conformance/threads_test.cpp), so the choice
-// changes only the speed, and only the machine can tell which is faster: on a 2-core EPYC VM the
-// strips won at 10^4 robots (1.34x), on a 2-core Xeon VM they lost everywhere (10^4 robots on
-// 1024^2: 0.70x; 10^6 robots: 0.65x), with the same code and the same work.
+// Chooses, stage by stage, between the parallel strips (band_schedule.hpp, strip_schedule.hpp)
+// and one thread by timing both. The two give the same bits (tests/conformance/threads_test.cpp),
+// so the choice changes only the speed, and only the machine can tell which is faster: on a
+// 2-core EPYC VM the strips won at 10^4 robots (1.34x); on a 2-core Xeon VM the strip schedule
+// lost everywhere (10^4 robots on 1024^2: 0.70x; 10^6 robots: 0.65x), with the same code and work.
 //
-// Policy: the first kTrials stages of each mode alternate (parallel first); after that the mode
-// with the smaller median of its last kTrials times runs, and every kReprobeEvery-th stage runs
-// the other one, so a change in the work (robots spreading out) or in the machine's load is seen.
-// A re-probe costs at most 1 / kReprobeEvery of the stages in the slower mode.
+// Policy: trials alternate the modes (parallel first) until each has kTrials times, or until
+// each has one and one mode took kClearlySlower times the other's (a long stage of 10^6 robots
+// need not be tried three times to see it). Then the mode with the smaller median of its last
+// (up to) kTrials times runs, and every kReprobeEvery-th stage runs the other, so a change in
+// the work (robots spreading out) or in the machine's load is seen. A re-probe costs at most
+// 1 / kReprobeEvery of the stages in the slower mode; it runs with caches warmed by the other
+// mode, so the choice leans to the current mode and changes on a clear difference only.
 #include <algorithm>
 #include <array>
 #include <cstdint>
@@ -19,17 +22,17 @@ class StageTuner {
  public:
   static constexpr int kTrials = 3;
   static constexpr int64_t kReprobeEvery = 32;
+  static constexpr double kClearlySlower = 1.25;
 
   // Whether the next stage should run on the strips.
   bool next_parallel() const {
-    if (count_[kParallel] < kTrials || count_[kSequential] < kTrials)
-      return count_[kParallel] <= count_[kSequential];
+    if (!decided()) return count_[kParallel] <= count_[kSequential];
     const bool best = faster_is_parallel();
     return (decided_ + 1) % kReprobeEvery == 0 ? !best : best;
   }
   // A stage ran on the strips (or on one thread) and took `ns` nanoseconds.
   void record(bool parallel, int64_t ns) {
-    const bool chosen = count_[kParallel] >= kTrials && count_[kSequential] >= kTrials;
+    const bool chosen = decided();
     const int m = parallel ? kParallel : kSequential;
     times_[m][static_cast<std::size_t>(count_[m] % kTrials)] = ns;
     ++count_[m];
@@ -37,17 +40,26 @@ class StageTuner {
   }
   // What it would choose now, were it not re-probing (for tests and reports).
   bool faster_is_parallel() const { return median(kParallel) < median(kSequential); }
+  // The trials are over.
+  bool decided() const {
+    if (count_[kParallel] >= kTrials && count_[kSequential] >= kTrials) return true;
+    if (count_[kParallel] == 0 || count_[kSequential] == 0) return false;
+    const auto p = static_cast<double>(median(kParallel)), s = static_cast<double>(median(kSequential));
+    return p >= kClearlySlower * s || s >= kClearlySlower * p;
+  }
 
  private:
   enum Mode : int { kParallel = 0, kSequential = 1 };
   int64_t median(int m) const {
+    const auto n = static_cast<std::size_t>(std::min<int64_t>(count_[m], kTrials));
+    if (n == 0) return 0;
     std::array<int64_t, kTrials> t = times_[m];
-    std::nth_element(t.begin(), t.begin() + kTrials / 2, t.end());
-    return t[kTrials / 2];
+    std::nth_element(t.begin(), t.begin() + static_cast<std::ptrdiff_t>(n / 2), t.begin() + static_cast<std::ptrdiff_t>(n));
+    return t[n / 2];
   }
   std::array<std::array<int64_t, kTrials>, 2> times_{};   // the last kTrials times, a ring each
   std::array<int64_t, 2> count_{};
-  int64_t decided_ = 0;   // stages run by choice (after both modes' trials)
+  int64_t decided_ = 0;   // stages run by choice (after the trials)
 };
 
 }  // namespace swarmcheck::impl::exploration

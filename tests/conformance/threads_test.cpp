@@ -168,6 +168,16 @@ TEST(StageTuner, SwitchesToOneThreadWhenTheStripsBecomeSlowerAndBackWhenTheyReco
   EXPECT_TRUE(t.faster_is_parallel());
 }
 
+TEST(StageTuner, EndsItsTrialsAfterOneOfEachWhenOneModeIsClearlySlower) {
+  StageTuner t;
+  const std::string trials = tuner_choices(t, 2, 1'500'000, 1'000'000);   // 10^6 robots: 1.5x
+  EXPECT_EQ(trials, "PS");
+  EXPECT_TRUE(t.decided());
+  EXPECT_FALSE(t.faster_is_parallel());
+  const std::string after = tuner_choices(t, 32, 1'500'000, 1'000'000);
+  EXPECT_EQ(after, std::string(31, 'S') + "P");   // the first re-probe, at the 32nd chosen stage
+}
+
 TEST(StageTuner, OneSlowOutlierDoesNotFlipTheChoice) {
   StageTuner t;
   tuner_choices(t, 2 * StageTuner::kTrials, 900, 1000);
