@@ -101,9 +101,14 @@ std::optional<int64_t> Environment::plan_parallel(spec::EnvironmentState& env, L
   cells_.resize(env.robots.size());
   for (std::size_t r = 0; r < cells_.size(); ++r) cells_[r] = env.robots[r].cell;
   int64_t newly = 0;
-  if (band_.build(cells_, cfg_.scenario.map_size, reach, strips)) {
+  // Built with twice the reach, the band schedule serves this step's deposits too: a robot's
+  // deposit centre is within s_range of the cell it decides from, so two deposit windows that
+  // meet belong to robots whose cells are within 4 s_range.
+  band_for_deposit_tick_.reset();
+  if (band_.build(cells_, cfg_.scenario.map_size, 2 * reach, strips)) {
     for (StripPlanning& p : strip_planning_) p.decisions.clear();
     newly = band_.run(arena_, strip_planning_, decide, ahead);
+    band_for_deposit_tick_ = env.tick + 1;
   } else {
     rows_.resize(env.robots.size());
     for (std::size_t r = 0; r < rows_.size(); ++r) rows_[r] = cells_[r][0];
@@ -159,7 +164,9 @@ bool Environment::deposit_parallel(const spec::EnvironmentState& env, LazyGrid& 
     return int64_t{0};
   };
   const auto ahead = [&](int32_t r) { prefetch(env.deposit_centre[static_cast<std::size_t>(r)]); };
-  if (band_.build(env.deposit_centre, cfg_.scenario.map_size, reach, strips)) {
+  const bool planned_on_band = band_for_deposit_tick_ == env.tick;
+  band_for_deposit_tick_.reset();
+  if (planned_on_band || band_.build(env.deposit_centre, cfg_.scenario.map_size, reach, strips)) {
     band_.run(arena_, no_scratch_, deposit, ahead);
     return true;
   }

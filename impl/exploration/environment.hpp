@@ -65,6 +65,8 @@ class Environment {
   mutable tbb::task_arena arena_;
   // The parallel stages' schedules and per-strip candidates, reused from step to step.
   mutable BandSchedule band_;     // tried first: no waiting, for sparse robots
+  // The tick of the deposits the band schedule of this step's planning also serves, if any.
+  mutable std::optional<int64_t> band_for_deposit_tick_;
   mutable StripSchedule strips_;  // otherwise: waiting at the strip edges
   mutable std::vector<int32_t> rows_;
   mutable std::vector<CellIndex> cells_;
