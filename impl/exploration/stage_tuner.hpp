@@ -9,9 +9,10 @@
 // each has one and one mode took kClearlySlower times the other's (a long stage of 10^6 robots
 // need not be tried three times to see it). Then the mode with the smaller median of its last
 // (up to) kTrials times runs, and every kReprobeEvery-th stage runs the other, so a change in
-// the work (robots spreading out) or in the machine's load is seen. A re-probe costs at most
-// 1 / kReprobeEvery of the stages in the slower mode; it runs with caches warmed by the other
-// mode, so the choice leans to the current mode and changes on a clear difference only.
+// the work (robots spreading out) or in the machine's load is seen. A stage right after a change
+// of mode runs with caches warmed by the other mode (the strips' cells in two cores' caches, or
+// all in one): its time is dropped and the same mode runs again, so every time compared is of a
+// warm stage. Re-probes thus cost 2 / kReprobeEvery of the stages in the slower mode.
 #include <algorithm>
 #include <array>
 #include <cstdint>
@@ -26,17 +27,22 @@ class StageTuner {
 
   // Whether the next stage should run on the strips.
   bool next_parallel() const {
+    if (repeat_) return last_parallel_;   // the last stage warmed the caches up for this one
     if (!decided()) return count_[kParallel] <= count_[kSequential];
     const bool best = faster_is_parallel();
     return (decided_ + 1) % kReprobeEvery == 0 ? !best : best;
   }
   // A stage ran on the strips (or on one thread) and took `ns` nanoseconds.
   void record(bool parallel, int64_t ns) {
-    const bool chosen = decided();
+    if (decided()) ++decided_;
+    const bool switched = stages_ == 0 || parallel != last_parallel_;
+    ++stages_;
+    last_parallel_ = parallel;
+    repeat_ = switched;
+    if (switched) return;   // a cold stage: not compared
     const int m = parallel ? kParallel : kSequential;
     times_[m][static_cast<std::size_t>(count_[m] % kTrials)] = ns;
     ++count_[m];
-    if (chosen) ++decided_;
   }
   // What it would choose now, were it not re-probing (for tests and reports).
   bool faster_is_parallel() const { return median(kParallel) < median(kSequential); }
@@ -60,6 +66,8 @@ class StageTuner {
   std::array<std::array<int64_t, kTrials>, 2> times_{};   // the last kTrials times, a ring each
   std::array<int64_t, 2> count_{};
   int64_t decided_ = 0;   // stages run by choice (after the trials)
+  int64_t stages_ = 0;
+  bool last_parallel_ = false, repeat_ = false;
 };
 
 }  // namespace swarmcheck::impl::exploration
