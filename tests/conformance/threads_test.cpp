@@ -81,20 +81,26 @@ RC_GTEST_PROP(Threads, StripPlanningGivesTheOneThreadBitsOnOneTwoFourAndEightThr
   }
 }
 
-TEST(Threads, StripPlanningOfThousandsOfRobotsEqualsTheModel) {
+namespace {
+
+// Robots on every di-th row and dj-th column of an empty n x n map, abstract and stochastic.
+Scenario lattice(int32_t n, int32_t di, int32_t dj, int32_t s_range, int64_t steps) {
   Scenario s = default_scenario();
-  s.map_size = 96;
+  s.map_size = n;
   s.obstacles.clear();
   s.robots.clear();
-  for (int32_t i = 0; i < 96; i += 2)
-    for (int32_t j = 0; j < 96; j += 3) s.robots.push_back({i + 0.5, j + 0.5});   // 1536 robots
+  for (int32_t i = 0; i < n; i += di)
+    for (int32_t j = 0; j < n; j += dj) s.robots.push_back({i + 0.5, j + 0.5});
+  s.params.s_range = s_range;
   s.mode = Mode::abstract;
   s.rule = RuleSet::stochastic;
-  s.max_steps = 40;
-  ExplorationOptions parallel;
-  parallel.threads = 4;
-  parallel.parallel_min_robots = 1;
-  Exploration a(s, parallel);
+  s.max_steps = steps;
+  return s;
+}
+
+// The library with these options and the model agree on every step's record.
+void expect_equals_model_step_by_step(const Scenario& s, const ExplorationOptions& options) {
+  Exploration a(s, options);
   swarmcheck::model::exploration::ExplorationModel m(s);
   while (!m.done()) {
     a.step();
@@ -103,29 +109,24 @@ TEST(Threads, StripPlanningOfThousandsOfRobotsEqualsTheModel) {
   }
 }
 
+}  // namespace
+
+TEST(Threads, StripPlanningOfThousandsOfRobotsEqualsTheModel) {
+  ExplorationOptions parallel;
+  parallel.threads = 4;
+  parallel.parallel_min_robots = 1;
+  expect_equals_model_step_by_step(lattice(96, 2, 3, 1, 40), parallel);   // 1536 robots
+}
+
 // With the default options the Environment times the strips against one thread and runs the
 // faster (impl/exploration/stage_tuner.hpp); its first stages alternate between the two, so one
 // run mixes both, step by step, and must still be the model's bits.
 TEST(Threads, TunedRunsThatMixStripsAndOneThreadStepByStepEqualTheModel) {
-  Scenario s = default_scenario();
-  s.map_size = 64;
-  s.obstacles.clear();
-  s.robots.clear();
-  for (int32_t i = 0; i < 64; i += 2)
-    for (int32_t j = 0; j < 64; j += 3) s.robots.push_back({i + 0.5, j + 0.5});   // 704 robots
-  s.params.s_range = 3;   // 704 x 7^2 window cells: over the threshold for strips
-  s.mode = Mode::abstract;
-  s.rule = RuleSet::stochastic;
-  s.max_steps = 70;       // the trials, then past the first re-probe
+  // 704 robots x 7^2 window cells: over the threshold for strips; 70 steps: the trials, then
+  // past the first re-probe.
   ExplorationOptions tuned;
   tuned.threads = 4;
-  Exploration a(s, tuned);
-  swarmcheck::model::exploration::ExplorationModel m(s);
-  while (!m.done()) {
-    a.step();
-    m.step();
-    ASSERT_EQ(first_difference_text(m.record(), a.record()), "") << a.steps();
-  }
+  expect_equals_model_step_by_step(lattice(64, 2, 3, 3, 70), tuned);
 }
 
 namespace {
