@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <utility>
 #include <thread>
 
 #include <tbb/info.h>
@@ -81,12 +82,14 @@ int64_t Environment::plan(spec::EnvironmentState& env, LazyGrid& grid) const {
     if (const auto newly = plan_parallel(env, grid, strips)) return *newly;
     return plan_sequential(env, grid);
   }
+  // The tuner times a planning step's two stages together, in one mode: the decisions' band
+  // schedule serves the deposits too, so neither stage's cost alone tells which mode is faster.
   const auto t0 = std::chrono::steady_clock::now();
   std::optional<int64_t> newly;
-  if (plan_tuner_.next_parallel()) newly = plan_parallel(env, grid, strips);
+  if (step_tuner_.next_parallel()) newly = plan_parallel(env, grid, strips);
   const bool parallel = newly.has_value();
   if (!parallel) newly = plan_sequential(env, grid);
-  plan_tuner_.record(parallel, nanoseconds_since(t0));
+  tuned_step_ = TunedStep{parallel, env.tick + 1, nanoseconds_since(t0)};
   return *newly;
 }
 
@@ -151,10 +154,13 @@ void Environment::deposit(const spec::EnvironmentState& env, LazyGrid& grid) con
     if (!deposit_parallel(env, grid, strips)) deposit_sequential(env, grid);
     return;
   }
+  // The mode of this step's decisions (a tuned step plans before it deposits, at the tick before).
+  const std::optional<TunedStep> step = std::exchange(tuned_step_, std::nullopt);
+  SWARM_DEMAND(step && step->deposit_tick == env.tick);
   const auto t0 = std::chrono::steady_clock::now();
-  const bool parallel = deposit_tuner_.next_parallel() && deposit_parallel(env, grid, strips);
+  const bool parallel = step->parallel && deposit_parallel(env, grid, strips);
   if (!parallel) deposit_sequential(env, grid);
-  deposit_tuner_.record(parallel, nanoseconds_since(t0));
+  step_tuner_.record(parallel, step->plan_ns + nanoseconds_since(t0));
 }
 
 bool Environment::deposit_parallel(const spec::EnvironmentState& env, LazyGrid& grid, int32_t strips) const {

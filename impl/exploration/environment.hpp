@@ -76,7 +76,14 @@ class Environment {
   };
   mutable std::vector<StripPlanning> strip_planning_;
   mutable std::vector<char> no_scratch_;
-  mutable StageTuner plan_tuner_, deposit_tuner_;
+  // Strips or one thread for a whole planning step (decisions and deposits), by timing both.
+  mutable StageTuner step_tuner_;
+  struct TunedStep {
+    bool parallel;          // the decisions ran on the strips
+    int64_t deposit_tick;   // the tick of the step's deposits
+    int64_t plan_ns;        // the decisions' time
+  };
+  mutable std::optional<TunedStep> tuned_step_;
   // Last: its initialisation runs the deposit stage, which uses the members above.
   swarmcheck::exploration::EnvironmentState env_;
 };

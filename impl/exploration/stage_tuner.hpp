@@ -8,11 +8,13 @@
 // Policy: trials alternate the modes (parallel first) until each has kTrials times, or until
 // each has one and one mode took kClearlySlower times the other's (a long stage of 10^6 robots
 // need not be tried three times to see it). Then the mode with the smaller median of its last
-// (up to) kTrials times runs, and every kReprobeEvery-th stage runs the other, so a change in
-// the work (robots spreading out) or in the machine's load is seen. A stage right after a change
-// of mode runs with caches warmed by the other mode (the strips' cells in two cores' caches, or
-// all in one): its time is dropped and the same mode runs again, so every time compared is of a
-// warm stage. Re-probes thus cost 2 / kReprobeEvery of the stages in the slower mode.
+// (up to) kTrials times runs, and now and then the other runs as a probe, so a change in the
+// work (robots spreading out) or in the machine's load is seen: the first probe after
+// kReprobeEvery stages, and the interval doubles (up to kReprobeMax) each time a probe leaves
+// the choice as it was, and starts again from kReprobeEvery when the choice changes. A stage
+// right after a change of mode runs with caches warmed by the other mode (the strips' cells in
+// two cores' caches, or all in one): its time is dropped and the same mode runs again, so every
+// time compared is of a warm stage; a probe is thus two stages.
 #include <algorithm>
 #include <array>
 #include <cstdint>
@@ -23,6 +25,7 @@ class StageTuner {
  public:
   static constexpr int kTrials = 3;
   static constexpr int64_t kReprobeEvery = 32;
+  static constexpr int64_t kReprobeMax = 1024;
   static constexpr double kClearlySlower = 1.25;
 
   // Whether the next stage should run on the strips.
@@ -30,19 +33,28 @@ class StageTuner {
     if (repeat_) return last_parallel_;   // the last stage warmed the caches up for this one
     if (!decided()) return count_[kParallel] <= count_[kSequential];
     const bool best = faster_is_parallel();
-    return (decided_ + 1) % kReprobeEvery == 0 ? !best : best;
+    return since_probe_ + 1 >= interval_ ? !best : best;
   }
   // A stage ran on the strips (or on one thread) and took `ns` nanoseconds.
   void record(bool parallel, int64_t ns) {
-    if (decided()) ++decided_;
+    const bool chosen = decided();
+    const bool best_before = chosen && faster_is_parallel();
     const bool switched = stages_ == 0 || parallel != last_parallel_;
     ++stages_;
     last_parallel_ = parallel;
     repeat_ = switched;
-    if (switched) return;   // a cold stage: not compared
-    const int m = parallel ? kParallel : kSequential;
-    times_[m][static_cast<std::size_t>(count_[m] % kTrials)] = ns;
-    ++count_[m];
+    if (!switched) {   // a warm stage: compared
+      const int m = parallel ? kParallel : kSequential;
+      times_[m][static_cast<std::size_t>(count_[m] % kTrials)] = ns;
+      ++count_[m];
+    }
+    if (!chosen) return;
+    if (parallel == best_before) {
+      ++since_probe_;
+    } else if (!switched) {   // a probe's timed stage: the probe is over
+      since_probe_ = 0;
+      interval_ = faster_is_parallel() == best_before ? std::min(2 * interval_, kReprobeMax) : kReprobeEvery;
+    }
   }
   // What it would choose now, were it not re-probing (for tests and reports).
   bool faster_is_parallel() const { return median(kParallel) < median(kSequential); }
@@ -65,7 +77,8 @@ class StageTuner {
   }
   std::array<std::array<int64_t, kTrials>, 2> times_{};   // the last kTrials times, a ring each
   std::array<int64_t, 2> count_{};
-  int64_t decided_ = 0;   // stages run by choice (after the trials)
+  int64_t since_probe_ = 0;              // stages run by choice since the last probe
+  int64_t interval_ = kReprobeEvery;     // of the next probe
   int64_t stages_ = 0;
   bool last_parallel_ = false, repeat_ = false;
 };

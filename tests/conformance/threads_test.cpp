@@ -154,20 +154,18 @@ std::vector<std::string> runs_of(const std::string& choices) {
   return out;
 }
 
-TEST(StageTuner, AlternatesWarmPairsForItsTrialsThenRunsTheFasterModeAndReprobesTheOtherInPairs) {
+TEST(StageTuner, AlternatesWarmPairsForItsTrialsThenProbesTheOtherModeAtDoublingIntervals) {
   StageTuner t;
   // Each mode twice in a row: the first of a pair runs cold (after the other mode) and is not timed.
   EXPECT_EQ(tuner_choices(t, 4 * StageTuner::kTrials, 900, 1000), "PPSSPPSSPPSS");
   EXPECT_TRUE(t.decided());
   EXPECT_TRUE(t.faster_is_parallel());
-  const std::string after = tuner_choices(t, 97, 900, 1000);
-  const std::vector<std::string> runs = runs_of(after);
-  EXPECT_EQ(std::count(after.begin(), after.end(), 'S'), 6) << after;   // three probes of two
-  for (const std::string& r : runs) {
-    if (r[0] == 'S') {
-      EXPECT_EQ(r, "SS") << after;
-    }
-  }
+  // Probes of two stages; each that leaves the choice as it was doubles the interval.
+  const std::string after = tuner_choices(t, 31 + 2 + 63 + 2 + 127 + 2, 900, 1000);
+  std::vector<std::size_t> lengths;
+  for (const std::string& r : runs_of(after)) lengths.push_back(r.size());
+  EXPECT_EQ(lengths, (std::vector<std::size_t>{31, 2, 63, 2, 127, 2})) << after;
+  EXPECT_EQ(after.front(), 'P');
 }
 
 TEST(StageTuner, SwitchesToOneThreadWhenTheStripsBecomeSlowerAndBackWhenTheyRecover) {
@@ -176,11 +174,12 @@ TEST(StageTuner, SwitchesToOneThreadWhenTheStripsBecomeSlowerAndBackWhenTheyReco
   ASSERT_TRUE(t.faster_is_parallel());
   // The strips slow down (the machine's other core got busy): seen by the stages that run them.
   const std::string slow = tuner_choices(t, 10, 3000, 1000);
-  EXPECT_FALSE(t.faster_is_parallel()) << slow;
+  EXPECT_EQ(slow, "PPPSSSSSSS");
+  EXPECT_FALSE(t.faster_is_parallel());
   const std::string settled = tuner_choices(t, 32, 3000, 1000);
   EXPECT_LE(std::count(settled.begin(), settled.end(), 'P'), 2) << settled;   // at most one probe
   // They recover: the probes see it (a median needs two of the last three).
-  tuner_choices(t, 3 * StageTuner::kReprobeEvery, 500, 1000);
+  tuner_choices(t, 512, 500, 1000);
   EXPECT_TRUE(t.faster_is_parallel());
 }
 
