@@ -1,6 +1,7 @@
 #pragma once
-// Chooses, stage by stage, between the parallel strips (band_schedule.hpp, strip_schedule.hpp)
-// and one thread by timing both. The two give the same bits (tests/conformance/threads_test.cpp),
+// Chooses, run by run of some work (the Environment: a planning step's decisions and deposits),
+// between the parallel strips (band_schedule.hpp, strip_schedule.hpp) and one thread by timing
+// both; "stage" below is one such run. The two give the same bits (tests/conformance/threads_test.cpp),
 // so the choice changes only the speed, and only the machine can tell which is faster: on a
 // 2-core EPYC VM the strips won at 10^4 robots (1.34x); on a 2-core Xeon VM the strip schedule
 // lost everywhere (10^4 robots on 1024^2: 0.70x; 10^6 robots: 0.65x), with the same code and work.
