@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "impl/exploration/band_schedule.hpp"
+#include "impl/exploration/cache_line_allocator.hpp"
 #include "impl/exploration/lazy_grid.hpp"
 #include "impl/exploration/stage_tuner.hpp"
 #include "impl/exploration/strip_schedule.hpp"
@@ -70,9 +71,12 @@ class Environment {
   mutable StripSchedule strips_;  // otherwise: waiting at the strip edges
   mutable std::vector<int32_t> rows_;
   mutable std::vector<CellIndex> cells_;
-  struct alignas(64) StripPlanning {   // a cache line each: every robot writes to its strip's
-    std::vector<Candidate> candidates;
-    std::vector<std::pair<int32_t, swarmcheck::exploration::RobotDecision>> decisions;   // applied after
+  // A cache line each, and so are its buffers: every robot writes to its strip's.
+  struct alignas(kCacheLine) StripPlanning {
+    std::vector<Candidate, CacheLineAllocator<Candidate>> candidates;
+    std::vector<std::pair<int32_t, swarmcheck::exploration::RobotDecision>,
+                CacheLineAllocator<std::pair<int32_t, swarmcheck::exploration::RobotDecision>>>
+        decisions;   // applied after the stage
   };
   mutable std::vector<StripPlanning> strip_planning_;
   mutable std::vector<char> no_scratch_;

@@ -88,10 +88,11 @@ struct EnvironmentState {
   Progress progress;
 };
 
-// The candidates of a robot in c: its window without c, raster order, pheromone at tick.
-template <EnvironmentGrid G>
+// The candidates of a robot in c: its window without c, raster order, pheromone at tick. (Any
+// allocator: impl's per-thread buffers keep to their own cache lines.)
+template <EnvironmentGrid G, class Alloc>
 void gather_candidates(const EnvironmentConfig& cfg, const G& grid, CellIndex c, int64_t tick,
-                       std::vector<Candidate>& out) {
+                       std::vector<Candidate, Alloc>& out) {
   out.clear();
   const Window w = window_around(c, cfg.scenario.params.s_range, cfg.scenario.map_size);
   for (int32_t i = w.i_lo; i <= w.i_hi; ++i)
@@ -124,9 +125,9 @@ inline void apply_decision_to_robot(const EnvironmentConfig& cfg, EnvironmentSta
 
 // One robot's decision on the grid: gather, choose, decide, and the decision's grid effects.
 // `newly` counts the cells it newly marked visited. `scratch` is reused storage.
-template <EnvironmentGrid G>
+template <EnvironmentGrid G, class Alloc>
 RobotDecision decide_on_grid(const EnvironmentConfig& cfg, const EnvironmentState& env, G& grid, int32_t r,
-                             std::vector<Candidate>& scratch, int64_t& newly) {
+                             std::vector<Candidate, Alloc>& scratch, int64_t& newly) {
   const CellIndex current = env.robots[static_cast<std::size_t>(r)].cell;
   gather_candidates(cfg, grid, current, env.tick, scratch);
   const Choice ch = choose(*cfg.rules, cfg.terms, scratch, DrawSite{cfg.scenario.seed, env.tick, r});
