@@ -7,8 +7,9 @@
 // uses by default (impl: every core). At the end a table gives, per size, both impl times, the
 // model's, model / impl (as the CLI runs it, and on one thread) and the speed-up from threads.
 // load/r1000000/n1024 times reading, validating and building a 10^6-robot scenario.
-// ceiling/ and ceiling1/ time the decision stage's bare work split over the cores with no schedule
-// (decision_ceiling.hpp): the most threads could give it on this machine; a second table.
+// threads/... run one thread and every core side by side (threads_ab.hpp): the speed-up from
+// threads as the CLI runs, with the schedules forced, and the decision stage's ceiling with no
+// schedule at all; a second table.
 #include <benchmark/benchmark.h>
 
 #include <cstdio>
@@ -19,9 +20,7 @@
 #include <tuple>
 #include <utility>
 
-#include <tbb/info.h>
-
-#include "bench/exploration/decision_ceiling.hpp"
+#include "bench/exploration/threads_ab.hpp"
 #include "model/exploration/exploration_model.hpp"
 #include "spec/exploration/rng.hpp"
 #include "spec/exploration/scenario.hpp"
@@ -111,8 +110,9 @@ class RatioReporter : public benchmark::ConsoleReporter {
       const std::string engine = name.substr(0, slash), size = name.substr(slash + 1);
       // With --benchmark_repetitions the median stands for the runs (it is reported after them).
       if (engine == "load" || (r.run_type == Run::RT_Aggregate && r.aggregate_name != "median")) continue;
-      if (engine == "ceiling" || engine == "ceiling1") {
-        (engine == "ceiling" ? ceiling_ : ceiling1_)[size] = r.GetAdjustedRealTime();   // us
+      if (engine == "threads") {
+        const auto c = [&](const char* k) { const auto it = r.counters.find(k); return it == r.counters.end() ? 0.0 : it->second.value; };
+        threads_[size] = {c("one_us"), c("all_us"), c("speedup")};
         continue;
       }
       (engine == "impl" ? impl_ : engine == "impl1" ? impl1_ : model_)[size] = r.GetAdjustedRealTime();   // us
@@ -133,18 +133,19 @@ class RatioReporter : public benchmark::ConsoleReporter {
         std::printf("%-26s %12.2f %12.2f %14.2f %9.1fx %9.1fx %8.2fx\n", size.c_str(), impl_us, impl1_us, m->second,
                     m->second / impl_us, m->second / impl1_us, impl1_us / impl_us);
     }
-    if (ceiling_.empty()) return;
-    std::printf("\n%-26s %12s %12s %9s   (decisions only, no schedule: decision_ceiling.hpp)\n",
-                "ceiling robots/map", "all us/pass", "1 us/pass", "threads");
-    for (const auto& [size, all_us] : ceiling_) {
-      const auto one = ceiling1_.find(size);
-      if (one != ceiling1_.end())
-        std::printf("%-26s %12.2f %12.2f %8.2fx\n", size.c_str(), all_us, one->second, one->second / all_us);
-    }
+    if (threads_.empty()) return;
+    std::printf("\n%-34s %12s %12s %9s   (side by side: threads_ab.hpp)\n", "threads/variant/mode/robots/map",
+                "1 thread us", "all us", "speed-up");
+    for (const auto& [size, t] : threads_)
+      std::printf("%-34s %12.2f %12.2f %8.2fx\n", size.c_str(), t.one_us, t.all_us, t.speedup);
   }
 
  private:
-  std::map<std::string, double> impl_, impl1_, model_, ceiling_, ceiling1_;
+  std::map<std::string, double> impl_, impl1_, model_;
+  struct SideBySide {
+    double one_us, all_us, speedup;
+  };
+  std::map<std::string, SideBySide> threads_;
 };
 
 void register_all() {
@@ -172,15 +173,21 @@ void register_all() {
       ->Unit(benchmark::kMicrosecond)->MinTime(1.0);
   benchmark::RegisterBenchmark("impl1/abstract/r1000000/n1024", bench_impl1, Mode::abstract, 1'000'000, 1024)
       ->Unit(benchmark::kMicrosecond)->MinTime(1.0);
-  // The decision stage's ceiling for threads, on the same layouts as impl/abstract/...
-  const int32_t cores = tbb::info::default_concurrency();
+  // Threads side by side with one thread, on the layouts of impl/abstract/...: as the CLI runs,
+  // with the schedules forced, and the decision stage's ceiling.
+  ExplorationOptions strips;
+  strips.parallel_min_robots = 1;
   for (const auto& [robots, map] : {std::pair{10'000, 256}, std::pair{10'000, 1024}, std::pair{10'000, 4096},
                                     std::pair{1'000'000, 1024}}) {
     const std::string size = "abstract/r" + std::to_string(robots) + "/n" + std::to_string(map);
     const Scenario s = bench_scenario(Mode::abstract, robots, map);
-    for (const auto& [engine, threads] : {std::pair{std::string("ceiling"), cores}, std::pair{std::string("ceiling1"), 1}})
-      benchmark::RegisterBenchmark((engine + "/" + size).c_str(), swarmcheck::bench::bench_decision_ceiling, s, threads)
-          ->Unit(benchmark::kMicrosecond)->MinTime(robots >= 1'000'000 ? 1.0 : 0.2);
+    const double min_time = robots >= 1'000'000 ? 2.0 : 0.5;
+    benchmark::RegisterBenchmark(("threads/cli/" + size).c_str(), swarmcheck::bench::bench_threads_steps, s,
+                                 ExplorationOptions{})->Unit(benchmark::kMicrosecond)->MinTime(min_time);
+    benchmark::RegisterBenchmark(("threads/strips/" + size).c_str(), swarmcheck::bench::bench_threads_steps, s, strips)
+        ->Unit(benchmark::kMicrosecond)->MinTime(min_time);
+    benchmark::RegisterBenchmark(("threads/ceiling/" + size).c_str(), swarmcheck::bench::bench_threads_ceiling, s)
+        ->Unit(benchmark::kMicrosecond)->MinTime(min_time);
   }
 }
 

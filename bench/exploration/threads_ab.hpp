@@ -1,0 +1,76 @@
+#pragma once
+// What threads give, measured so that the machine's noise cannot make the ratio: one thread and
+// every core run side by side, a block of steps (or passes) each in turn, each timed on its own,
+// so both see the same neighbours and the same load. (On a shared 2-core VM, separate benchmark
+// runs of identical code differ by 25 % and more, which a ratio of two separate runs inherits.)
+// Blocks of `block` steps rather than single steps: a switch costs each side its caches and
+// the idle side's worker threads fall asleep; with 16 steps of 10^4 robots a block, the switch is
+// a few percent of a block. The counters: one_us and all_us per step, speedup = one_us / all_us.
+//   threads/cli/...:     the options `swarmcheck run` uses by default (the tuner chooses) vs --threads 1
+//   threads/strips/...:  the parallel schedules forced on every stage vs --threads 1
+//   threads/ceiling/...: the decision stage's bare work split over the cores with no schedule
+//                        (decision_ceiling.hpp) vs the same on one thread
+// Both simulations run the same scenario and, being bit-identical, stay in the same state.
+#include <benchmark/benchmark.h>
+#include <tbb/info.h>
+#include <tbb/task_arena.h>
+
+#include <chrono>
+
+#include "bench/exploration/decision_ceiling.hpp"
+#include "swarmcheck/exploration.hpp"
+
+namespace swarmcheck::bench {
+
+class SideBySide {
+ public:
+  explicit SideBySide(int32_t block) : block_(block) {}
+  template <class One, class All>
+  void iteration(One&& one, All&& all) {
+    const auto t0 = std::chrono::steady_clock::now();
+    for (int32_t k = 0; k < block_; ++k) one();
+    const auto t1 = std::chrono::steady_clock::now();
+    for (int32_t k = 0; k < block_; ++k) all();
+    const auto t2 = std::chrono::steady_clock::now();
+    one_s_ += std::chrono::duration<double>(t1 - t0).count();
+    all_s_ += std::chrono::duration<double>(t2 - t1).count();
+    n_ += block_;
+  }
+  void report(benchmark::State& state) const {
+    if (n_ == 0) return;
+    state.counters["one_us"] = one_s_ / static_cast<double>(n_) * 1e6;
+    state.counters["all_us"] = all_s_ / static_cast<double>(n_) * 1e6;
+    state.counters["speedup"] = one_s_ / all_s_;
+  }
+
+ private:
+  int32_t block_;
+  double one_s_ = 0, all_s_ = 0;
+  int64_t n_ = 0;
+};
+
+// Steps of 10^4 robots take about a millisecond, of 10^6 about a tenth of a second.
+inline int32_t block_for(const exploration::Scenario& s) { return s.robots.size() >= 1'000'000 ? 2 : 16; }
+
+inline void bench_threads_steps(benchmark::State& state, const exploration::Scenario& s,
+                                exploration::ExplorationOptions all_options) {
+  exploration::ExplorationOptions one_options;
+  one_options.threads = 1;
+  exploration::Exploration one(s, one_options), all(s, all_options);
+  SideBySide ab(block_for(s));
+  for (auto _ : state) ab.iteration([&] { one.step(); }, [&] { all.step(); });
+  ab.report(state);
+}
+
+inline void bench_threads_ceiling(benchmark::State& state, const exploration::Scenario& s) {
+  DecisionCeiling ceiling(s);
+  const int32_t cores = tbb::info::default_concurrency();
+  tbb::task_arena one(1), all(cores);
+  SideBySide ab(block_for(s));
+  for (auto _ : state)
+    ab.iteration([&] { benchmark::DoNotOptimize(ceiling.pass(one, 1)); },
+                 [&] { benchmark::DoNotOptimize(ceiling.pass(all, cores)); });
+  ab.report(state);
+}
+
+}  // namespace swarmcheck::bench
