@@ -110,14 +110,14 @@ std::optional<int64_t> Environment::plan_parallel(spec::EnvironmentState& env, L
   band_for_deposit_tick_.reset();
   if (band_.build(cells_, cfg_.scenario.map_size, 2 * reach, strips)) {
     for (StripPlanning& p : strip_planning_) p.decisions.clear();
-    newly = band_.run(arena_, strip_planning_, decide, ahead);
+    newly = stage([&] { return band_.run(arena_, strip_planning_, decide, ahead); });
     band_for_deposit_tick_ = env.tick + 1;
   } else {
     rows_.resize(env.robots.size());
     for (std::size_t r = 0; r < rows_.size(); ++r) rows_[r] = cells_[r][0];
     if (strips_.build(rows_, cfg_.scenario.map_size, reach, strips) <= 1) return std::nullopt;
     for (StripPlanning& p : strip_planning_) p.decisions.clear();
-    newly = strips_.run(arena_, strip_planning_, decide, ahead);
+    newly = stage([&] { return strips_.run(arena_, strip_planning_, decide, ahead); });
   }
   // The robots' records are written after the stage: threads in step through the robot indices,
   // writing neighbouring records as they went, would fight over their cache lines.
@@ -173,14 +173,14 @@ bool Environment::deposit_parallel(const spec::EnvironmentState& env, LazyGrid& 
   const bool planned_on_band = band_for_deposit_tick_ == env.tick;
   band_for_deposit_tick_.reset();
   if (planned_on_band || band_.build(env.deposit_centre, cfg_.scenario.map_size, reach, strips)) {
-    band_.run(arena_, no_scratch_, deposit, ahead);
+    stage([&] { return band_.run(arena_, no_scratch_, deposit, ahead); });
     return true;
   }
   const std::size_t n = env.deposit_centre.size();
   rows_.resize(n);
   for (std::size_t r = 0; r < n; ++r) rows_[r] = env.deposit_centre[r][0];
   if (strips_.build(rows_, cfg_.scenario.map_size, reach, strips) <= 1) return false;
-  strips_.run(arena_, no_scratch_, deposit, ahead);
+  stage([&] { return strips_.run(arena_, no_scratch_, deposit, ahead); });
   return true;
 }
 

@@ -15,6 +15,7 @@
 #include "impl/exploration/lazy_grid.hpp"
 #include "impl/exploration/stage_tuner.hpp"
 #include "impl/exploration/strip_schedule.hpp"
+#include "impl/exploration/warm_workers.hpp"
 #include "spec/exploration/environment_step.hpp"
 #include "swarmcheck/exploration.hpp"
 
@@ -25,6 +26,7 @@ class Environment {
   Environment(const swarmcheck::exploration::Scenario& s, const ExplorationOptions& options);
   Environment(const Environment&) = delete;   // the grid points into cfg_
   Environment& operator=(const Environment&) = delete;
+  ~Environment() { warm_.wake(); }
 
   void step(bool all_arrived);
   // A step whose planning another protocol decided (the handshake state is left as it is).
@@ -40,9 +42,13 @@ class Environment {
   int64_t plan(swarmcheck::exploration::EnvironmentState& env, LazyGrid& grid) const;
   void deposit(const swarmcheck::exploration::EnvironmentState& env, LazyGrid& grid) const;
 
-  // The threads this Environment (and the master's robots) may use, and where they run.
+  // The threads this Environment (and the master's robots) may use, and where they run (its
+  // workers, if kept warm after a stage, are called back first).
   int32_t threads() const { return threads_; }
-  tbb::task_arena& arena() const { return arena_; }
+  tbb::task_arena& arena() const {
+    warm_.wake();
+    return arena_;
+  }
 
  private:
   int64_t plan_sequential(swarmcheck::exploration::EnvironmentState& env, LazyGrid& grid) const;
@@ -57,6 +63,14 @@ class Environment {
   // How many strips a stage over `robots` robots is worth cutting (1: do it on this thread).
   int32_t strips_for(std::size_t robots) const;
   void prefetch(CellIndex c) const;
+  // Runs one parallel stage (a schedule's run) with the workers kept warm around it.
+  template <class Run>
+  int64_t stage(Run&& run) const {
+    warm_.wake();
+    const int64_t sum = run();
+    warm_.park(arena_, arena_.max_concurrency() - 1);
+    return sum;
+  }
 
   swarmcheck::exploration::EnvironmentConfig cfg_;
   ExplorationOptions options_;
@@ -64,6 +78,7 @@ class Environment {
   mutable std::vector<Candidate> scratch_;   // the sequential stage's candidates, reused
   int32_t threads_;
   mutable tbb::task_arena arena_;
+  mutable WarmWorkers warm_;   // between the parallel stages of a step
   // The parallel stages' schedules and per-strip candidates, reused from step to step.
   mutable BandSchedule band_;     // tried first: no waiting, for sparse robots
   // The tick of the deposits the band schedule of this step's planning also serves, if any.
