@@ -12,10 +12,15 @@
 // (up to) kTrials times runs, and now and then the other runs as a probe, so a change in the
 // work (robots spreading out) or in the machine's load is seen: the first probe after
 // kReprobeEvery stages, and the interval doubles (up to kReprobeMax) each time a probe leaves
-// the choice as it was, and starts again from kReprobeEvery when the choice changes. A stage
-// right after a change of mode runs with caches warmed by the other mode (the strips' cells in
-// two cores' caches, or all in one): its time is dropped and the same mode runs again, so every
-// time compared is of a warm stage; a probe is thus two stages.
+// the choice as it was, and starts again from kReprobeEvery when the choice changes (by a probe
+// or by the chosen mode's own times). A probe is
+// judged on fresh times only: kTrials timed stages of the other mode, ended after the first if
+// that one took kClearlySlower times the chosen mode's median. (A probe of one stage, compared
+// through a median with two times from long before, kept a choice that one burst of the
+// machine's noise had made for hundreds of stages: on a shared 2-core VM a tenth of the stages
+// ran on the slower mode.) A stage right after a change of mode runs with caches warmed by the
+// other mode (the strips' cells in two cores' caches, or all in one): its time is dropped and the
+// same mode runs again, so every time compared is of a warm stage.
 #include <algorithm>
 #include <array>
 #include <cstdint>
@@ -33,6 +38,7 @@ class StageTuner {
   bool next_parallel() const {
     if (repeat_) return last_parallel_;   // the last stage warmed the caches up for this one
     if (!decided()) return count_[kParallel] <= count_[kSequential];
+    if (probe_left_ > 0) return probe_parallel_;
     const bool best = faster_is_parallel();
     return since_probe_ + 1 >= interval_ ? !best : best;
   }
@@ -44,23 +50,43 @@ class StageTuner {
     ++stages_;
     last_parallel_ = parallel;
     repeat_ = switched;
+    const int m = parallel ? kParallel : kSequential;
+    if (chosen && probe_left_ == 0 && parallel != best_before) {   // a probe's first (warm-up) stage
+      probe_left_ = kTrials;
+      probe_parallel_ = parallel;
+      best_at_probe_ = best_before;
+      count_[m] = 0;   // the probe is judged on its own times
+    }
     if (!switched) {   // a warm stage: compared
-      const int m = parallel ? kParallel : kSequential;
       times_[m][static_cast<std::size_t>(count_[m] % kTrials)] = ns;
       ++count_[m];
     }
-    if (!chosen) return;
-    if (parallel == best_before) {
-      ++since_probe_;
-    } else if (!switched) {   // a probe's timed stage: the probe is over
-      since_probe_ = 0;
-      interval_ = faster_is_parallel() == best_before ? std::min(2 * interval_, kReprobeMax) : kReprobeEvery;
+    if (chosen && !decided_) decided_ = true;
+    if (!chosen) {
+      decided_ = decided();
+      return;
     }
+    if (probe_left_ == 0) {   // a chosen stage; its own times may change the choice
+      if (faster_is_parallel() != best_before) {
+        since_probe_ = 0;
+        interval_ = kReprobeEvery;
+      } else {
+        ++since_probe_;
+      }
+      return;
+    }
+    if (switched) return;
+    const auto chosen_median = static_cast<double>(median(best_at_probe_ ? kParallel : kSequential));
+    if (--probe_left_ > 0 && static_cast<double>(ns) < kClearlySlower * chosen_median) return;
+    probe_left_ = 0;   // the probe is over
+    since_probe_ = 0;
+    interval_ = faster_is_parallel() == best_at_probe_ ? std::min(2 * interval_, kReprobeMax) : kReprobeEvery;
   }
-  // What it would choose now, were it not re-probing (for tests and reports).
+  // What it would choose now, were it not probing (for tests and reports).
   bool faster_is_parallel() const { return median(kParallel) < median(kSequential); }
   // The trials are over.
   bool decided() const {
+    if (decided_) return true;
     if (count_[kParallel] >= kTrials && count_[kSequential] >= kTrials) return true;
     if (count_[kParallel] == 0 || count_[kSequential] == 0) return false;
     const auto p = static_cast<double>(median(kParallel)), s = static_cast<double>(median(kSequential));
@@ -77,10 +103,13 @@ class StageTuner {
     return t[n / 2];
   }
   std::array<std::array<int64_t, kTrials>, 2> times_{};   // the last kTrials times, a ring each
-  std::array<int64_t, 2> count_{};
+  std::array<int64_t, 2> count_{};       // times in each ring (since a probe's start, for its mode)
   int64_t since_probe_ = 0;              // stages run by choice since the last probe
   int64_t interval_ = kReprobeEvery;     // of the next probe
   int64_t stages_ = 0;
+  int probe_left_ = 0;                   // timed stages the running probe still needs
+  bool decided_ = false;                 // latched: the trials are over
+  bool probe_parallel_ = false, best_at_probe_ = false;
   bool last_parallel_ = false, repeat_ = false;
 };
 

@@ -160,11 +160,12 @@ TEST(StageTuner, AlternatesWarmPairsForItsTrialsThenProbesTheOtherModeAtDoubling
   EXPECT_EQ(tuner_choices(t, 4 * StageTuner::kTrials, 900, 1000), "PPSSPPSSPPSS");
   EXPECT_TRUE(t.decided());
   EXPECT_TRUE(t.faster_is_parallel());
-  // Probes of two stages; each that leaves the choice as it was doubles the interval.
-  const std::string after = tuner_choices(t, 31 + 2 + 63 + 2 + 127 + 2, 900, 1000);
+  // Probes of a warm-up and kTrials timed stages (the other mode is not clearly slower here);
+  // each that leaves the choice as it was doubles the interval.
+  const std::string after = tuner_choices(t, 31 + 4 + 63 + 4 + 127 + 4, 900, 1000);
   std::vector<std::size_t> lengths;
   for (const std::string& r : runs_of(after)) lengths.push_back(r.size());
-  EXPECT_EQ(lengths, (std::vector<std::size_t>{31, 2, 63, 2, 127, 2})) << after;
+  EXPECT_EQ(lengths, (std::vector<std::size_t>{31, 4, 63, 4, 127, 4})) << after;
   EXPECT_EQ(after.front(), 'P');
 }
 
@@ -190,6 +191,21 @@ TEST(StageTuner, EndsItsTrialsAfterOneWarmStageOfEachWhenOneModeIsClearlySlower)
   EXPECT_FALSE(t.faster_is_parallel());
   const std::string after = tuner_choices(t, 33, 1'500'000, 1'000'000);
   EXPECT_EQ(after, std::string(31, 'S') + "PP");   // the first probe, at the 32nd chosen stage
+}
+
+TEST(StageTuner, AProbeIsJudgedOnItsOwnFreshTimesNotOnTimesFromBeforeABurstOfNoise) {
+  StageTuner t;
+  tuner_choices(t, 4 * StageTuner::kTrials, 900, 1000);
+  ASSERT_TRUE(t.faster_is_parallel());
+  // A burst of noise on the strips: two slow stages make one thread the choice.
+  EXPECT_EQ(tuner_choices(t, 3, 5000, 1000), "PPP");
+  EXPECT_FALSE(t.faster_is_parallel());
+  // The burst is over; the first probe (at the 32nd chosen stage) sees three fresh stages of the
+  // strips, all faster, and switches back, although the strips' two slow times are still the
+  // last ones it had before.
+  const std::string after = tuner_choices(t, 31 + 4 + 1, 900, 1000);
+  EXPECT_EQ(after, std::string(31, 'S') + "PPPP" + "P") << after;
+  EXPECT_TRUE(t.faster_is_parallel());
 }
 
 TEST(StageTuner, OneSlowOutlierDoesNotFlipTheChoice) {
