@@ -66,9 +66,12 @@ bool BandSchedule::build(std::span<const swarmcheck::exploration::CellIndex> cel
   if (static_cast<int64_t>(queue_.size()) > max_deferred) return false;
 
   // Phase 1's lists, strip by strip in index order; phase 2's in index order.
+  // A strip's members: the robots of its rows (the row buckets say how many) but the deferred.
   start_.assign(static_cast<std::size_t>(count_) + 1, 0);
-  for (int64_t r = 0; r < n; ++r)
-    if (!is_deferred_[static_cast<std::size_t>(r)]) ++start_[static_cast<std::size_t>(strip_of_row_[static_cast<std::size_t>(rows_[static_cast<std::size_t>(r)])]) + 1];
+  for (int32_t k = 0; k < count_; ++k)
+    start_[static_cast<std::size_t>(k) + 1] = row_start_[static_cast<std::size_t>(lo_[static_cast<std::size_t>(k) + 1])] -
+                                              row_start_[static_cast<std::size_t>(lo_[static_cast<std::size_t>(k)])];
+  for (int32_t t : queue_) --start_[static_cast<std::size_t>(strip_of_row_[static_cast<std::size_t>(rows_[static_cast<std::size_t>(t)])]) + 1];
   for (int32_t k = 0; k < count_; ++k) start_[static_cast<std::size_t>(k) + 1] += start_[static_cast<std::size_t>(k)];
   members_.resize(static_cast<std::size_t>(start_[static_cast<std::size_t>(count_)]));
   std::vector<int64_t>& fill = fill_;
