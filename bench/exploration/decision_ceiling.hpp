@@ -3,13 +3,12 @@
 // (spec::gather_candidates + spec::choose on the impl's LazyGrid), read-only, with the robots cut
 // into one contiguous share per thread and no schedule at all: no bands, no strips, no waiting,
 // no applying of the decisions. No correct schedule does less work than this, so its speed-up
-// from threads bounds what the decision stage can gain on this machine.
-//   ceiling1/...: one thread (a task arena of 1); ceiling/...: every core.
-#include <benchmark/benchmark.h>
+// from threads bounds what the decision stage can gain on this machine (threads/ceiling/... in
+// threads_ab.hpp runs it on one thread and on every core, side by side).
 #include <tbb/parallel_for.h>
+#include <tbb/partitioner.h>
 #include <tbb/task_arena.h>
 
-#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -44,7 +43,6 @@ class DecisionCeiling {
                      .target;
         }
         sums_[static_cast<std::size_t>(k)] = sum;
-
       }, tbb::static_partitioner{});
     });
     int64_t total = 0;
@@ -57,18 +55,12 @@ class DecisionCeiling {
   impl::exploration::LazyGrid grid_;
   exploration::EnvironmentState env_;
   // As impl's strips keep theirs: a buffer that shares a cache line with the other thread's
-  // costs the pass all its speed-up from threads (0.99x against 1.55x, 10^4 robots on 1024^2).
+  // costs the pass all its speed-up from threads (0.99x against 1.9x, 10^4 robots on 1024^2).
   struct alignas(impl::exploration::kCacheLine) Scratch {
     std::vector<exploration::Candidate, impl::exploration::CacheLineAllocator<exploration::Candidate>> c;
   };
   std::vector<Scratch> scratch_;
   std::vector<int64_t> sums_;
 };
-
-inline void bench_decision_ceiling(benchmark::State& state, const exploration::Scenario& s, int32_t threads) {
-  DecisionCeiling ceiling(s);
-  tbb::task_arena arena(threads);
-  for (auto _ : state) benchmark::DoNotOptimize(ceiling.pass(arena, threads));
-}
 
 }  // namespace swarmcheck::bench
