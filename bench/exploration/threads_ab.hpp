@@ -10,12 +10,15 @@
 //   threads/strips/...:  the parallel schedules forced on every stage vs --threads 1
 //   threads/ceiling/...: the decision stage's bare work split over the cores with no schedule
 //                        (decision_ceiling.hpp) vs the same on one thread
-// Both simulations run the same scenario and, being bit-identical, stay in the same state.
+// Both simulations run the same scenario and, being bit-identical, stay in the same state; the
+// bench checks that at the end (a change that makes one side cheaper by breaking it, e.g. robots
+// that no longer move, would otherwise look like a speed-up) and reports an error if not.
 #include <benchmark/benchmark.h>
 #include <tbb/info.h>
 #include <tbb/task_arena.h>
 
 #include <chrono>
+#include <cstring>
 
 #include "bench/exploration/decision_ceiling.hpp"
 #include "swarmcheck/exploration.hpp"
@@ -52,6 +55,14 @@ class SideBySide {
 // Steps of 10^4 robots take about a millisecond, of 10^6 about a tenth of a second.
 inline int32_t block_for(const exploration::Scenario& s) { return s.robots.size() >= 1'000'000 ? 2 : 16; }
 
+// The two simulations' robots, visited cells and pheromone (by its digest) are the same bits.
+inline bool same_state(const exploration::Exploration& a, const exploration::Exploration& b) {
+  const auto ra = a.robots(), rb = b.robots();
+  return a.steps() == b.steps() && a.visited() == b.visited() && ra.size() == rb.size() &&
+         std::memcmp(ra.data(), rb.data(), ra.size_bytes()) == 0 &&
+         a.record().pheromone_digest == b.record().pheromone_digest;
+}
+
 inline void bench_threads_steps(benchmark::State& state, const exploration::Scenario& s,
                                 exploration::ExplorationOptions all_options) {
   exploration::ExplorationOptions one_options;
@@ -59,6 +70,7 @@ inline void bench_threads_steps(benchmark::State& state, const exploration::Scen
   exploration::Exploration one(s, one_options), all(s, all_options);
   SideBySide ab(block_for(s));
   for (auto _ : state) ab.iteration([&] { one.step(); }, [&] { all.step(); });
+  if (!same_state(one, all)) state.SkipWithError("one thread and every core diverged: a bug, not a speed-up");
   ab.report(state);
 }
 
