@@ -26,7 +26,6 @@ class Environment {
   Environment(const swarmcheck::exploration::Scenario& s, const ExplorationOptions& options);
   Environment(const Environment&) = delete;   // the grid points into cfg_
   Environment& operator=(const Environment&) = delete;
-  ~Environment() { warm_.wake(); }
 
   void step(bool all_arrived);
   // A step whose planning another protocol decided (the handshake state is left as it is).
@@ -68,7 +67,7 @@ class Environment {
   int64_t stage(Run&& run) const {
     warm_.wake();
     const int64_t sum = run();
-    warm_.park(arena_, arena_.max_concurrency() - 1);
+    warm_.park(arena_.max_concurrency() - 1);
     return sum;
   }
 
@@ -78,7 +77,7 @@ class Environment {
   mutable std::vector<Candidate> scratch_;   // the sequential stage's candidates, reused
   int32_t threads_;
   mutable tbb::task_arena arena_;
-  mutable WarmWorkers warm_;   // between the parallel stages of a step
+  mutable WarmWorkers warm_{arena_};   // between the parallel stages of a step (after arena_)
   // The parallel stages' schedules and per-strip candidates, reused from step to step.
   mutable BandSchedule band_;     // tried first: no waiting, for sparse robots
   // The tick of the deposits the band schedule of this step's planning also serves, if any.

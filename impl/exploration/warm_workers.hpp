@@ -3,17 +3,17 @@
 // while instead of going to sleep (OpenMP runtimes do the same: KMP_BLOCKTIME, GOMP_SPINCOUNT).
 // A TBB worker that finds no work spins only briefly, then sleeps; between a step's stages the
 // calling thread runs the sequential parts (the schedule's build, the deferred robots, the robots'
-// records), some tens of microseconds, long enough for the workers to sleep. A sleeping vCPU
-// comes back late and with cold caches: on a 2-core VM the worker's strip took 1.1-1.4x the
-// calling thread's (same robots, strips swapped between the threads: the slowness followed the
-// thread). After a stage, park() hands every worker a task that spins until the next stage's
-// wake() (or kSpinMax, so an idle program does not burn a core).
+// records), some tens of microseconds, long enough for the workers to sleep, and a sleeping vCPU
+// comes back late. After a stage, park() hands every worker a task that spins until the next
+// stage's wake() (or kSpinMax, so an idle program does not burn a core). The tasks belong to a
+// task_group that the destructor waits for (after waking them), so none outlives this object or
+// is left in the arena's queue (a queued task that no thread ever ran leaked under LSan).
 #include <tbb/task_arena.h>
+#include <tbb/task_group.h>
 
 #include <atomic>
 #include <chrono>
 #include <cstdint>
-#include <memory>
 
 namespace swarmcheck::impl::exploration {
 
@@ -21,24 +21,34 @@ class WarmWorkers {
  public:
   static constexpr std::chrono::microseconds kSpinMax{1000};
 
-  // After a parallel stage in `arena`: its `workers` worker threads spin until wake().
-  void park(tbb::task_arena& arena, int32_t workers) {
-    const uint64_t epoch = shared_->epoch.load(std::memory_order_relaxed);
-    for (int32_t k = 0; k < workers; ++k) {
-      shared_->spinning.fetch_add(1, std::memory_order_relaxed);
-      arena.enqueue([shared = shared_, epoch] {   // outlives this object if need be
-        const auto deadline = std::chrono::steady_clock::now() + kSpinMax;
-        while (shared->epoch.load(std::memory_order_relaxed) == epoch &&
-               std::chrono::steady_clock::now() < deadline)
-          for (int i = 0; i < 64; ++i) pause();
-        shared->spinning.fetch_sub(1, std::memory_order_relaxed);
-      });
-    }
+  // `arena` must outlive this object.
+  explicit WarmWorkers(tbb::task_arena& arena) : arena_(&arena) {}
+  WarmWorkers(const WarmWorkers&) = delete;
+  WarmWorkers& operator=(const WarmWorkers&) = delete;
+  ~WarmWorkers() {
+    wake();
+    arena_->execute([&] { group_.wait(); });   // a task not yet started runs here and ends at once
+  }
+
+  // After a parallel stage: `workers` of the arena's worker threads spin until wake().
+  void park(int32_t workers) {
+    const uint64_t epoch = epoch_.load(std::memory_order_relaxed);
+    arena_->execute([&] {
+      for (int32_t k = 0; k < workers; ++k) {
+        spinning_.fetch_add(1, std::memory_order_relaxed);
+        group_.run([this, epoch] {
+          const auto deadline = std::chrono::steady_clock::now() + kSpinMax;
+          while (epoch_.load(std::memory_order_relaxed) == epoch && std::chrono::steady_clock::now() < deadline)
+            for (int i = 0; i < 64; ++i) pause();
+          spinning_.fetch_sub(1, std::memory_order_relaxed);
+        });
+      }
+    });
   }
   // Before the next parallel stage: the spinning tasks end (one not yet started ends at once).
-  void wake() { shared_->epoch.fetch_add(1, std::memory_order_relaxed); }
+  void wake() { epoch_.fetch_add(1, std::memory_order_relaxed); }
   // Spinning tasks handed out and not yet ended (for tests).
-  int32_t spinning() const { return shared_->spinning.load(std::memory_order_relaxed); }
+  int32_t spinning() const { return spinning_.load(std::memory_order_relaxed); }
 
  private:
   static void pause() {
@@ -48,11 +58,10 @@ class WarmWorkers {
     asm volatile("yield");
 #endif
   }
-  struct Shared {
-    std::atomic<uint64_t> epoch{0};
-    std::atomic<int32_t> spinning{0};
-  };
-  std::shared_ptr<Shared> shared_ = std::make_shared<Shared>();
+  tbb::task_arena* arena_;
+  tbb::task_group group_;
+  std::atomic<uint64_t> epoch_{0};
+  std::atomic<int32_t> spinning_{0};
 };
 
 }  // namespace swarmcheck::impl::exploration
