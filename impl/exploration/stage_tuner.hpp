@@ -13,9 +13,9 @@
 // work (robots spreading out) or in the machine's load is seen: the first probe after
 // kReprobeEvery stages, and the interval doubles (up to kReprobeMax) each time a probe leaves
 // the choice as it was, and starts again from kReprobeEvery when the choice changes (by a probe
-// or by the chosen mode's own times). A probe is
-// judged on fresh times only: kTrials timed stages of the other mode, ended after the first if
-// that one took kClearlySlower times the chosen mode's median. (A probe of one stage, compared
+// or by the chosen mode's own times). A probe is judged on fresh times only: kTrials timed
+// stages of the other mode, ended after the first if that one took kClearlySlower times the
+// chosen mode's median. (A probe of one stage, compared
 // through a median with two times from long before, kept a choice that one burst of the
 // machine's noise had made for hundreds of stages: on a shared 2-core VM a tenth of the stages
 // ran on the slower mode.) A stage right after a change of mode runs with caches warmed by the
@@ -61,9 +61,8 @@ class StageTuner {
       times_[m][static_cast<std::size_t>(count_[m] % kTrials)] = ns;
       ++count_[m];
     }
-    if (chosen && !decided_) decided_ = true;
     if (!chosen) {
-      decided_ = decided();
+      decided_ = decided();   // latched: a probe clears its mode's times, not the decision
       return;
     }
     if (probe_left_ == 0) {   // a chosen stage; its own times may change the choice
