@@ -37,8 +37,11 @@ class WarmWorkers {
       for (int32_t k = 0; k < workers; ++k) {
         spinning_.fetch_add(1, std::memory_order_relaxed);
         group_.run([this, epoch] {
+          // Only a worker spins: the calling thread (the arena's slot 0) may run a task it
+          // spawned itself when it enters the arena again, and must not wait on it.
+          const bool worker = tbb::this_task_arena::current_thread_index() != 0;
           const auto deadline = std::chrono::steady_clock::now() + kSpinMax;
-          while (epoch_.load(std::memory_order_relaxed) == epoch && std::chrono::steady_clock::now() < deadline)
+          while (worker && epoch_.load(std::memory_order_relaxed) == epoch && std::chrono::steady_clock::now() < deadline)
             for (int i = 0; i < 64; ++i) pause();
           spinning_.fetch_sub(1, std::memory_order_relaxed);
         });

@@ -31,7 +31,7 @@ TEST(WarmWorkers, AParkedWorkerLetsGoAtWakeAndTheArenaThenRunsParallelWork) {
   tbb::task_arena arena(2);
   WarmWorkers warm(arena);
   warm.park(1);
-  EXPECT_EQ(warm.spinning(), 1);   // handed out (started or not)
+  EXPECT_LE(warm.spinning(), 1);   // handed out (started or not; it ends by itself after kSpinMax)
   warm.wake();
   EXPECT_TRUE(eventually([&] { return warm.spinning() == 0; }));
   std::atomic<int> done{0};
@@ -50,8 +50,8 @@ TEST(WarmWorkers, ParkingTwiceWithoutAStageInBetweenLeavesNoTaskBehind) {
   tbb::task_arena arena(2);
   WarmWorkers warm(arena);
   warm.park(1);
-  warm.park(1);
-  EXPECT_EQ(warm.spinning(), 2);
+  warm.park(1);   // the calling thread may run the first task itself: it must not spin on it
+  EXPECT_LE(warm.spinning(), 2);
   warm.wake();
   EXPECT_TRUE(eventually([&] { return warm.spinning() == 0; }));
 }
