@@ -112,7 +112,7 @@ class RatioReporter : public benchmark::ConsoleReporter {
       if (engine == "load" || (r.run_type == Run::RT_Aggregate && r.aggregate_name != "median")) continue;
       if (engine == "threads") {
         const auto c = [&](const char* k) { const auto it = r.counters.find(k); return it == r.counters.end() ? 0.0 : it->second.value; };
-        threads_[size] = {c("one_us"), c("all_us"), c("speedup")};
+        threads_[size] = {c("one_us"), c("all_us"), c("speedup"), c("share_slowdown")};
         continue;
       }
       (engine == "impl" ? impl_ : engine == "impl1" ? impl1_ : model_)[size] = r.GetAdjustedRealTime();   // us
@@ -134,16 +134,19 @@ class RatioReporter : public benchmark::ConsoleReporter {
                     m->second / impl_us, m->second / impl1_us, impl1_us / impl_us);
     }
     if (threads_.empty()) return;
-    std::printf("\n%-34s %12s %12s %9s   (side by side: threads_ab.hpp)\n", "threads/variant/mode/robots/map",
-                "1 thread us", "all us", "speed-up");
-    for (const auto& [size, t] : threads_)
-      std::printf("%-34s %12.2f %12.2f %8.2fx\n", size.c_str(), t.one_us, t.all_us, t.speedup);
+    std::printf("\n%-34s %12s %12s %9s %15s   (side by side: threads_ab.hpp)\n", "threads/variant/mode/robots/map",
+                "1 thread us", "all us", "speed-up", "share slowdown");
+    for (const auto& [size, t] : threads_) {
+      std::printf("%-34s %12.2f %12.2f %8.2fx", size.c_str(), t.one_us, t.all_us, t.speedup);
+      if (t.share_slowdown > 0) std::printf(" %14.2fx", t.share_slowdown);
+      std::printf("\n");
+    }
   }
 
  private:
   std::map<std::string, double> impl_, impl1_, model_;
   struct SideBySide {
-    double one_us, all_us, speedup;
+    double one_us, all_us, speedup, share_slowdown;   // share_slowdown: ceiling rows only
   };
   std::map<std::string, SideBySide> threads_;
 };

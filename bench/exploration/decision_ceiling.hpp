@@ -5,10 +5,17 @@
 // no applying of the decisions. No correct schedule does less work than this, so its speed-up
 // from threads bounds what the decision stage can gain on this machine (threads/ceiling/... in
 // threads_ab.hpp runs it on one thread and on every core, side by side).
+// Each share is timed on its thread: a share of 1/k of the robots should take 1/k of the pass
+// on one thread. When shares run together they take longer than that (at times 1.6x, on both
+// threads at once, with nothing shared but the read-only grid), the machine is slowing threads
+// that run together (its memory system, or a host that places the two vCPUs on one core), and
+// no schedule can win that back.
 #include <tbb/parallel_for.h>
 #include <tbb/partitioner.h>
 #include <tbb/task_arena.h>
 
+#include <algorithm>
+#include <chrono>
 #include <cstdint>
 #include <vector>
 
@@ -31,8 +38,10 @@ class DecisionCeiling {
     const int64_t n = static_cast<int64_t>(env_.robots.size());
     scratch_.resize(static_cast<std::size_t>(threads));
     sums_.assign(static_cast<std::size_t>(threads), 0);
+    share_us_.resize(static_cast<std::size_t>(threads));
     arena.execute([&] {
       tbb::parallel_for(0, threads, [&](int32_t k) {
+        const auto t0 = std::chrono::steady_clock::now();
         auto& c = scratch_[static_cast<std::size_t>(k)].c;
         int64_t sum = 0;
         for (int64_t r = n * k / threads; r < n * (k + 1) / threads; ++r) {
@@ -43,11 +52,22 @@ class DecisionCeiling {
                      .target;
         }
         sums_[static_cast<std::size_t>(k)] = sum;
+        share_us_[static_cast<std::size_t>(k)] =
+            std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - t0).count();
       }, tbb::static_partitioner{});
     });
+    if (threads > 1) shares_.push_back(*std::max_element(share_us_.begin(), share_us_.end()));
     int64_t total = 0;
     for (int64_t v : sums_) total += v;
     return total;
+  }
+
+  // The median over the passes on more than one thread of the slowest share's time (us).
+  double median_slowest_share_us() const {
+    if (shares_.empty()) return 0.0;
+    std::vector<double> v = shares_;
+    std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2), v.end());
+    return v[v.size() / 2];
   }
 
  private:
@@ -61,6 +81,8 @@ class DecisionCeiling {
   };
   std::vector<Scratch> scratch_;
   std::vector<int64_t> sums_;
+  std::vector<double> share_us_;   // the last pass's, per share
+  std::vector<double> shares_;     // per pass on more than one thread: its slowest share
 };
 
 }  // namespace swarmcheck::bench

@@ -9,7 +9,8 @@
 //   threads/cli/...:     the options `swarmcheck run` uses by default (the tuner chooses) vs --threads 1
 //   threads/strips/...:  the parallel schedules forced on every stage vs --threads 1
 //   threads/ceiling/...: the decision stage's bare work split over the cores with no schedule
-//                        (decision_ceiling.hpp) vs the same on one thread
+//                        (decision_ceiling.hpp) vs the same on one thread; share_slowdown: the
+//                        slowest share's time (median) over its part of the one-thread pass
 // Both simulations run the same scenario and, being bit-identical, stay in the same state; the
 // bench checks that at the end (a change that makes one side cheaper by breaking it, e.g. robots
 // that no longer move, would otherwise look like a speed-up) and reports an error if not.
@@ -83,6 +84,11 @@ inline void bench_threads_ceiling(benchmark::State& state, const exploration::Sc
     ab.iteration([&] { benchmark::DoNotOptimize(ceiling.pass(one, 1)); },
                  [&] { benchmark::DoNotOptimize(ceiling.pass(all, cores)); });
   ab.report(state);
+  // How much slower a share ran beside the others than its part of the one-thread pass: 1.0 is a
+  // machine on which threads do not slow each other; the speed-up is then cores / this.
+  const auto one_us = state.counters.find("one_us");
+  if (cores > 1 && one_us != state.counters.end() && one_us->second.value > 0)
+    state.counters["share_slowdown"] = ceiling.median_slowest_share_us() / (one_us->second.value / cores);
 }
 
 }  // namespace swarmcheck::bench
