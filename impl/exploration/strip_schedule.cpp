@@ -28,6 +28,15 @@ int32_t cut_strips(std::span<const int32_t> rows, int32_t map_rows, int32_t reac
 }
 
 int32_t StripSchedule::build(std::span<const int32_t> rows, int32_t map_rows, int32_t reach, int32_t strips) {
+  // The same rows as the last build (a step's deposit centres are, under most rules, the cells the
+  // next step's robots decide from): its lists hold, only the strips' progress starts again.
+  if (count_ > 0 && map_rows == built_for_.map_rows && reach == built_for_.reach && strips == built_for_.strips &&
+      std::equal(rows.begin(), rows.end(), built_rows_.begin(), built_rows_.end())) {
+    restart();
+    return count_;
+  }
+  built_for_ = {map_rows, reach, strips};
+  built_rows_.assign(rows.begin(), rows.end());
   const int64_t n = static_cast<int64_t>(rows.size());
   count_ = cut_strips(rows, map_rows, reach, strips, row_count_, lo_);
   if (count_ > capacity_) {
@@ -72,6 +81,14 @@ int32_t StripSchedule::build(std::span<const int32_t> rows, int32_t map_rows, in
     Strip& s = strips_[static_cast<std::size_t>(k)];
     s.begin = start[static_cast<std::size_t>(k)];
     s.end = start[static_cast<std::size_t>(k) + 1];
+  }
+  restart();
+  return count_;
+}
+
+void StripSchedule::restart() {
+  for (int32_t k = 0; k < count_; ++k) {
+    Strip& s = strips_[static_cast<std::size_t>(k)];
     s.held.store(false, std::memory_order_relaxed);
     s.pos = s.begin;
     s.sum = 0;
@@ -80,7 +97,6 @@ int32_t StripSchedule::build(std::span<const int32_t> rows, int32_t map_rows, in
       s.next_border[side].store(q < s.end ? members_[static_cast<std::size_t>(q)] : kNone, std::memory_order_relaxed);
     }
   }
-  return count_;
 }
 
 }  // namespace swarmcheck::impl::exploration
