@@ -56,6 +56,8 @@ int32_t StripSchedule::build(std::span<const int32_t> rows, int32_t map_rows, in
   border_.resize(static_cast<std::size_t>(n));
   std::vector<int64_t>& fill = fill_;
   fill.assign(start.begin(), start.end() - 1);
+  for (int32_t k = 0; k < count_; ++k)
+    for (int side : {kLower, kUpper}) strips_[static_cast<std::size_t>(k)].first_border[side] = start[static_cast<std::size_t>(k) + 1];
   for (int64_t r = 0; r < n; ++r) {
     const int32_t i = rows[static_cast<std::size_t>(r)];
     const auto k = static_cast<std::size_t>(row_count_[static_cast<std::size_t>(i)]);
@@ -65,17 +67,8 @@ int32_t StripSchedule::build(std::span<const int32_t> rows, int32_t map_rows, in
     if (k > 0 && i - lo_[k] < reach) b |= 1U << kLower;                            // within reach of the strip below
     if (k + 1 < static_cast<std::size_t>(count_) && lo_[k + 1] - 1 - i < reach) b |= 1U << kUpper;   // or above
     border_[p] = b;
-  }
-  for (int side : {kLower, kUpper}) {
-    auto& next = next_border_pos_[side];
-    next.resize(static_cast<std::size_t>(n));
-    for (int32_t k = 0; k < count_; ++k) {
-      int64_t after = start[static_cast<std::size_t>(k) + 1];
-      for (int64_t p = after - 1; p >= start[static_cast<std::size_t>(k)]; --p) {
-        if (border_[static_cast<std::size_t>(p)] & (1U << side)) after = p;
-        next[static_cast<std::size_t>(p)] = after;
-      }
-    }
+    for (int side : {kLower, kUpper})
+      if ((b & (1U << side)) && strips_[k].first_border[side] == start[k + 1]) strips_[k].first_border[side] = static_cast<int64_t>(p);
   }
   for (int32_t k = 0; k < count_; ++k) {
     Strip& s = strips_[static_cast<std::size_t>(k)];
@@ -93,7 +86,7 @@ void StripSchedule::restart() {
     s.pos = s.begin;
     s.sum = 0;
     for (int side : {kLower, kUpper}) {
-      const int64_t q = s.begin < s.end ? next_border_pos_[side][static_cast<std::size_t>(s.begin)] : s.end;
+      const int64_t q = s.first_border[side];
       s.next_border[side].store(q < s.end ? members_[static_cast<std::size_t>(q)] : kNone, std::memory_order_relaxed);
     }
   }

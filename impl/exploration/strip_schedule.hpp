@@ -69,6 +69,7 @@ class StripSchedule {
     std::atomic<uint32_t> epoch{0};
     alignas(64) int64_t begin = 0, end = 0, pos = 0;   // positions in members_, pos: next to do
     int64_t sum = 0;
+    int64_t first_border[2] = {0, 0};   // per edge: the position of the strip's first border robot, or end
   };
 
   bool try_hold(Strip& s) { return !s.held.exchange(true, std::memory_order_acquire); }
@@ -119,7 +120,6 @@ class StripSchedule {
   std::vector<int32_t> row_count_, lo_;   // robots per row; first row of each strip (+ map_rows)
   std::vector<int32_t> members_;          // robot indices, strip by strip, ascending in a strip
   std::vector<uint8_t> border_;           // per position: bit kLower, bit kUpper
-  std::vector<int64_t> next_border_pos_[2];   // per position: the strip's next border position, or end
   std::vector<int64_t> start_, fill_;         // each strip's first position; the filling cursor
 };
 
@@ -135,15 +135,15 @@ void StripSchedule::do_next(int32_t k, std::vector<Scratch>& scratch, Work& work
   s.sum += work(r, scratch[static_cast<std::size_t>(k)]);
   ++s.pos;
   // The robot was the next border robot of its edges: publish the one after it (release: its
-  // cells are written before a neighbour reads that it is done).
+  // cells are written before a neighbour reads that it is done). Found by a scan of the border
+  // bytes here, in the parallel stage, rather than tabled by build() on the calling thread: the
+  // scans of a stage cover each strip once per edge.
   for (int side : {kLower, kUpper})
     if (border_[p] & (1U << side)) {
-      int32_t next = kNone;
-      if (s.pos < s.end) {
-        const int64_t q = next_border_pos_[side][static_cast<std::size_t>(s.pos)];
-        if (q < s.end) next = members_[static_cast<std::size_t>(q)];
-      }
-      s.next_border[side].store(next, std::memory_order_release);
+      auto q = static_cast<std::size_t>(s.pos);
+      const auto end = static_cast<std::size_t>(s.end);
+      while (q < end && !(border_[q] & (1U << side))) ++q;
+      s.next_border[side].store(q < end ? members_[q] : kNone, std::memory_order_release);
       changed(s);
     }
 }
