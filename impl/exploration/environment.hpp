@@ -85,12 +85,9 @@ class Environment {
   mutable StripSchedule strips_;  // otherwise: waiting at the strip edges
   mutable std::vector<int32_t> rows_;
   mutable std::vector<CellIndex> cells_;
-  // A cache line each, and so are its buffers: every robot writes to its strip's.
+  // A cache line each, and so is its buffer: every robot writes its candidates to its strip's.
   struct alignas(kCacheLine) StripPlanning {
     std::vector<Candidate, CacheLineAllocator<Candidate>> candidates;
-    std::vector<std::pair<int32_t, swarmcheck::exploration::RobotDecision>,
-                CacheLineAllocator<std::pair<int32_t, swarmcheck::exploration::RobotDecision>>>
-        decisions;   // applied after the stage
   };
   mutable std::vector<StripPlanning> strip_planning_;
   mutable std::vector<char> no_scratch_;
