@@ -59,8 +59,8 @@ class StripSchedule {
   // Two cache lines of its own: what the neighbours poll while they wait (held, next_border,
   // epoch), and what the strip's holder writes at every robot (pos, sum). On one line, each
   // robot's write took the line back from a waiting neighbour's polling, so the strip ran slower
-  // the more its neighbour waited (10^6 robots on 1024^2, strips forced: 0.74-0.83x one thread,
-  // and 0.93-0.97x with the lines apart).
+  // the more its neighbour waited (10^6 robots on 1024^2, strips forced, side by side over three
+  // runs: 0.69-0.88x one thread; 0.85-0.96x with the lines apart).
   struct alignas(64) Strip {
     std::atomic<bool> held{false};
     std::atomic<int32_t> next_border[2] = {kNone, kNone};   // next robot index not yet done, per edge
