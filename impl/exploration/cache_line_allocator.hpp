@@ -1,6 +1,6 @@
 #pragma once
 // CacheLineAllocator<T>: an allocator whose blocks start on a cache line and fill whole lines.
-// Per-thread buffers that threads write robot by robot (a strip's candidates and decisions) must
+// Per-thread buffers that threads write robot by robot (a strip's candidates) must
 // never share a line with another thread's: two small vectors from the same heap are often
 // neighbours, and every push_back then moves the line between the cores. Measured with the
 // decision ceiling (bench/exploration/decision_ceiling.hpp, 10^4 robots on 1024^2, 2 threads):
@@ -23,7 +23,9 @@ struct CacheLineAllocator {
   T* allocate(std::size_t n) {
     return static_cast<T*>(::operator new(rounded(n), std::align_val_t{kCacheLine}));
   }
-  void deallocate(T* p, std::size_t n) noexcept { ::operator delete(p, rounded(n), std::align_val_t{kCacheLine}); }
+  // The unsized aligned delete: the sized one is not declared where sized deallocation is off
+  // (clang before 16, which builds the fuzz targets).
+  void deallocate(T* p, std::size_t) noexcept { ::operator delete(p, std::align_val_t{kCacheLine}); }
 
   template <class U>
   bool operator==(const CacheLineAllocator<U>&) const noexcept { return true; }
