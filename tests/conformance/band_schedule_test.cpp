@@ -13,9 +13,12 @@
 
 #include "impl/exploration/band_schedule.hpp"
 #include "spec/exploration/rng.hpp"
+#include "tests/conformance/schedule_order.hpp"
 
 using swarmcheck::exploration::CellIndex;
 using swarmcheck::impl::exploration::BandSchedule;
+
+using swarmcheck::testing::run_order;
 
 namespace {
 
@@ -23,20 +26,6 @@ const bool kSeededBandScheduleTest = [] { return ::setenv("RC_PARAMS", "seed=17"
 
 bool conflict(const CellIndex& a, const CellIndex& b, int32_t reach) {
   return std::abs(a[0] - b[0]) <= reach && std::abs(a[1] - b[1]) <= reach;
-}
-
-// The position in the run at which each robot's work was done.
-std::vector<int64_t> run_order(BandSchedule& b, int32_t threads, std::size_t robots) {
-  tbb::task_arena arena(threads);
-  std::atomic<int64_t> clock{0};
-  std::vector<int64_t> at(robots, -1);
-  std::vector<char> scratch;
-  const int64_t sum = b.run(arena, scratch, [&](int32_t r, char&) {
-    at[static_cast<std::size_t>(r)] = clock.fetch_add(1);
-    return int64_t{1};
-  }, [](int32_t) {});
-  EXPECT_EQ(sum, static_cast<int64_t>(robots));
-  return at;
 }
 
 }  // namespace
@@ -58,7 +47,8 @@ RC_GTEST_PROP(BandSchedule, EveryRobotRunsOnceAndConflictingRobotsRunInIndexOrde
   BandSchedule b;
   if (!b.build(at, map, reach, strips)) RC_DISCARD("too dense, or one strip");
   RC_TAG(b.deferred().empty() ? "none deferred" : "some deferred");
-  const std::vector<int64_t> order = run_order(b, *rc::gen::element(1, 2, 4), at.size());
+  tbb::task_arena arena(*rc::gen::element(1, 2, 4));
+  const std::vector<int64_t> order = run_order(b, arena, at.size());
   for (std::size_t r = 0; r < at.size(); ++r) RC_ASSERT(order[r] >= 0);
   for (std::size_t a = 0; a < at.size(); ++a)
     for (std::size_t c = a + 1; c < at.size(); ++c)
@@ -79,7 +69,8 @@ TEST(BandSchedule, DefersTheBorderRobotsAndTheChainsOfLargerIndexThatLeadAwayFro
   ASSERT_TRUE(b.build(at, 40, 2, 2));
   const std::vector<int32_t> deferred(b.deferred().begin(), b.deferred().end());
   EXPECT_EQ(deferred, (std::vector<int32_t>{0, 1, 3, 17}));
-  const std::vector<int64_t> order = run_order(b, 2, at.size());
+  tbb::task_arena arena(2);
+  const std::vector<int64_t> order = run_order(b, arena, at.size());
   for (std::size_t a = 0; a < at.size(); ++a)
     for (std::size_t c = a + 1; c < at.size(); ++c) {
       if (conflict(at[a], at[c], 2)) {

@@ -13,25 +13,15 @@
 
 #include "impl/exploration/strip_schedule.hpp"
 #include "spec/exploration/rng.hpp"
+#include "tests/conformance/schedule_order.hpp"
 
 using swarmcheck::impl::exploration::StripSchedule;
+
+using swarmcheck::testing::run_order;
 
 namespace {
 
 const bool kSeededStripScheduleTest = [] { return ::setenv("RC_PARAMS", "seed=17", 0) == 0; }();
-
-// The position in the run at which each robot's work was done.
-std::vector<int64_t> run_order(StripSchedule& s, tbb::task_arena& arena, std::size_t robots) {
-  std::atomic<int64_t> clock{0};
-  std::vector<int64_t> at(robots, -1);
-  std::vector<char> scratch;
-  const int64_t sum = s.run(arena, scratch, [&](int32_t r, char&) {
-    at[static_cast<std::size_t>(r)] = clock.fetch_add(1);
-    return int64_t{1};
-  }, [](int32_t) {});
-  EXPECT_EQ(sum, static_cast<int64_t>(robots));
-  return at;
-}
 
 std::vector<int32_t> random_rows(int32_t map, int32_t robots, uint64_t seed) {
   std::vector<int32_t> rows(static_cast<std::size_t>(robots));
