@@ -118,6 +118,8 @@ class StripSchedule {
   std::unique_ptr<Strip[]> strips_;
   int32_t capacity_ = 0;
   std::vector<int32_t> row_count_, lo_;   // robots per row; first row of each strip (+ map_rows)
+  std::vector<int32_t> row_strip_;        // per row: its strip
+  std::vector<uint8_t> row_border_;       // per row: bit kLower, bit kUpper (within reach of that edge)
   std::vector<int32_t> members_;          // robot indices, strip by strip, ascending in a strip
   std::vector<uint8_t> border_;           // per position: bit kLower, bit kUpper
   std::vector<int64_t> start_, fill_;         // each strip's first position; the filling cursor
