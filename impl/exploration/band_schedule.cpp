@@ -17,15 +17,23 @@ bool BandSchedule::build(std::span<const swarmcheck::exploration::CellIndex> cel
   count_ = cut_strips(rows_, map_size, reach, strips, row_count_, lo_);
   if (count_ <= 1) return false;
 
-  // Robots bucketed by row (a counting sort: index order within a row), and each row's strip.
-  row_start_.assign(static_cast<std::size_t>(map_size) + 1, 0);
+  // Robots bucketed by row (a counting sort: index order within a row), each with its column, so
+  // that the closure below scans contiguous memory; and each row's strip. Cursors and arrays are
+  // held in locals: behind references, every byte store might alias them.
+  row_start_.resize(static_cast<std::size_t>(map_size) + 1);
+  row_start_[0] = 0;
   for (int32_t i = 0; i < map_size; ++i)
     row_start_[static_cast<std::size_t>(i) + 1] = row_start_[static_cast<std::size_t>(i)] + row_count_[static_cast<std::size_t>(i)];
   by_row_.resize(cells.size());
+  by_row_column_.resize(cells.size());
   {
-    std::vector<int32_t>& fill = row_count_;   // reused as the filling cursor
-    std::copy(row_start_.begin(), row_start_.end() - 1, fill.begin());
-    for (int64_t r = 0; r < n; ++r) by_row_[static_cast<std::size_t>(fill[static_cast<std::size_t>(rows_[static_cast<std::size_t>(r)])]++)] = static_cast<int32_t>(r);
+    int32_t* const cursor = row_count_.data();   // reused as the filling cursor
+    std::copy(row_start_.begin(), row_start_.end() - 1, cursor);
+    int32_t* const robot = by_row_.data();
+    const int32_t* const row = rows_.data();
+    for (int64_t r = 0; r < n; ++r) robot[cursor[row[r]]++] = static_cast<int32_t>(r);
+    int32_t* const column = by_row_column_.data();
+    for (int64_t p = 0; p < n; ++p) column[p] = cells[static_cast<std::size_t>(robot[p])][1];
   }
   strip_of_row_.resize(static_cast<std::size_t>(map_size));
   for (int32_t k = 0; k < count_; ++k)
@@ -56,9 +64,9 @@ bool BandSchedule::build(std::span<const swarmcheck::exploration::CellIndex> cel
     const int32_t i0 = std::max(0, c[0] - reach), i1 = std::min(map_size - 1, c[0] + reach);
     for (auto p = static_cast<std::size_t>(row_start_[static_cast<std::size_t>(i0)]);
          p < static_cast<std::size_t>(row_start_[static_cast<std::size_t>(i1) + 1]); ++p) {
+      if (std::abs(by_row_column_[p] - c[1]) > reach) continue;   // most robots of the rows: no read of their own
       const int32_t r = by_row_[p];
       if (r <= t || is_deferred_[static_cast<std::size_t>(r)]) continue;
-      if (std::abs(cells[static_cast<std::size_t>(r)][1] - c[1]) > reach) continue;
       is_deferred_[static_cast<std::size_t>(r)] = 1;
       queue_.push_back(r);
     }
@@ -74,16 +82,21 @@ bool BandSchedule::build(std::span<const swarmcheck::exploration::CellIndex> cel
   for (int32_t t : queue_) --start_[static_cast<std::size_t>(strip_of_row_[static_cast<std::size_t>(rows_[static_cast<std::size_t>(t)])]) + 1];
   for (int32_t k = 0; k < count_; ++k) start_[static_cast<std::size_t>(k) + 1] += start_[static_cast<std::size_t>(k)];
   members_.resize(static_cast<std::size_t>(start_[static_cast<std::size_t>(count_)]));
-  std::vector<int64_t>& fill = fill_;
-  fill.assign(start_.begin(), start_.end() - 1);
+  fill_.assign(start_.begin(), start_.end() - 1);
   deferred_.clear();
-  for (int64_t r = 0; r < n; ++r) {
-    if (is_deferred_[static_cast<std::size_t>(r)]) {
-      deferred_.push_back(static_cast<int32_t>(r));
-      continue;
+  {
+    int64_t* const cursor = fill_.data();
+    int32_t* const members = members_.data();
+    const uint8_t* const deferred = is_deferred_.data();
+    const int32_t* const strip_of = strip_of_row_.data();
+    const int32_t* const row = rows_.data();
+    for (int64_t r = 0; r < n; ++r) {
+      if (deferred[r]) {
+        deferred_.push_back(static_cast<int32_t>(r));
+        continue;
+      }
+      members[cursor[strip_of[row[r]]]++] = static_cast<int32_t>(r);
     }
-    const auto k = static_cast<std::size_t>(strip_of_row_[static_cast<std::size_t>(rows_[static_cast<std::size_t>(r)])]);
-    members_[static_cast<std::size_t>(fill[k]++)] = static_cast<int32_t>(r);
   }
   return true;
 }

@@ -68,6 +68,7 @@ class BandSchedule {
   int32_t count_ = 0;
   std::vector<int32_t> rows_, row_count_, lo_, strip_of_row_;
   std::vector<int32_t> row_start_, by_row_;      // robots bucketed by row, index order in a row
+  std::vector<int32_t> by_row_column_;           // the column of each by_row_ entry
   std::vector<uint8_t> is_deferred_;
   std::vector<int32_t> queue_, deferred_;        // the closure's work list; deferred, index order
   std::vector<int64_t> start_;                   // each strip's first position in members_
