@@ -117,9 +117,7 @@ std::optional<int64_t> Environment::plan_parallel(spec::EnvironmentState& env, L
     newly = stage([&] { return band_.run(arena_, strip_planning_, decide, ahead); });
     band_for_deposit_tick_ = env.tick + 1;
   } else {
-    rows_.resize(env.robots.size());
-    for (std::size_t r = 0; r < rows_.size(); ++r) rows_[r] = cells_[r][0];
-    if (strips_.build(rows_, cfg_.scenario.map_size, reach, strips) <= 1) return std::nullopt;
+    if (strips_.build(cells_, cfg_.scenario.map_size, reach, strips) <= 1) return std::nullopt;
     newly = stage([&] { return strips_.run(arena_, strip_planning_, decide, ahead); });
   }
   return newly;
@@ -175,10 +173,7 @@ bool Environment::deposit_parallel(const spec::EnvironmentState& env, LazyGrid& 
     stage([&] { return band_.run(arena_, no_scratch_, deposit, ahead); });
     return true;
   }
-  const std::size_t n = env.deposit_centre.size();
-  rows_.resize(n);
-  for (std::size_t r = 0; r < n; ++r) rows_[r] = env.deposit_centre[r][0];
-  if (strips_.build(rows_, cfg_.scenario.map_size, reach, strips) <= 1) return false;
+  if (strips_.build(env.deposit_centre, cfg_.scenario.map_size, reach, strips) <= 1) return false;
   stage([&] { return strips_.run(arena_, no_scratch_, deposit, ahead); });
   return true;
 }

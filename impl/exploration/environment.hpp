@@ -83,7 +83,6 @@ class Environment {
   // The tick of the deposits the band schedule of this step's planning also serves, if any.
   mutable std::optional<int64_t> band_for_deposit_tick_;
   mutable StripSchedule strips_;  // otherwise: waiting at the strip edges
-  mutable std::vector<int32_t> rows_;
   mutable std::vector<CellIndex> cells_;
   // A cache line each, and so is its buffer: every robot writes its candidates to its strip's.
   struct alignas(kCacheLine) StripPlanning {
