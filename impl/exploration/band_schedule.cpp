@@ -14,7 +14,7 @@ bool BandSchedule::build(std::span<const swarmcheck::exploration::CellIndex> cel
   if (static_cast<double>(n) * side * side > kMaxNeighbours * static_cast<double>(map_size) * map_size) return false;
   rows_.resize(cells.size());
   for (std::size_t r = 0; r < cells.size(); ++r) rows_[r] = cells[r][0];
-  count_ = cut_strips(rows_, map_size, reach, strips, row_count_, lo_);
+  count_ = cut_strips(cells, map_size, reach, strips, row_count_, lo_);
   if (count_ <= 1) return false;
 
   // Robots bucketed by row (a counting sort: index order within a row), each with its column, so

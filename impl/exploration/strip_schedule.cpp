@@ -1,17 +1,16 @@
 #include "impl/exploration/strip_schedule.hpp"
 
 #include <algorithm>
-#include <cstring>
 
 namespace swarmcheck::impl::exploration {
 
-int32_t cut_strips(std::span<const int32_t> rows, int32_t map_rows, int32_t reach, int32_t strips,
-                   std::vector<int32_t>& row_count, std::vector<int32_t>& lo) {
-  const int64_t n = static_cast<int64_t>(rows.size());
+int32_t cut_strips(std::span<const swarmcheck::exploration::CellIndex> cells, int32_t map_rows, int32_t reach,
+                   int32_t strips, std::vector<int32_t>& row_count, std::vector<int32_t>& lo) {
+  const int64_t n = static_cast<int64_t>(cells.size());
   const int64_t min_height = int64_t{reach} + 1;
   // Strip boundaries at robot-count quantiles of the rows, each strip at least min_height rows.
   row_count.assign(static_cast<std::size_t>(map_rows), 0);
-  for (int32_t i : rows) ++row_count[static_cast<std::size_t>(i)];
+  for (const swarmcheck::exploration::CellIndex& c : cells) ++row_count[static_cast<std::size_t>(c[0])];
   lo.clear();
   lo.push_back(0);
   const int64_t per_strip = std::max<int64_t>(1, (n + strips - 1) / std::max(1, strips));
@@ -28,23 +27,31 @@ int32_t cut_strips(std::span<const int32_t> rows, int32_t map_rows, int32_t reac
   return count;
 }
 
+namespace {
+bool same_rows(std::span<const swarmcheck::exploration::CellIndex> cells, const std::vector<int32_t>& rows) {
+  if (cells.size() != rows.size()) return false;
+  for (std::size_t r = 0; r < rows.size(); ++r)
+    if (cells[r][0] != rows[r]) return false;
+  return true;
+}
+}  // namespace
+
 int32_t StripSchedule::build(std::span<const swarmcheck::exploration::CellIndex> cells, int32_t map_rows,
                              int32_t reach, int32_t strips) {
-  // The same cells as the last build (a step's deposit centres are, under most rules, the cells
-  // the next step's robots decide from): its lists hold, only the strips' progress starts again.
+  // The same rows as the last build (a step's deposit centres are, under most rules, the cells the
+  // next step's robots decide from): its lists hold, only the strips' progress starts again.
+  cells_ = cells;
+  reach_ = reach;
   if (count_ > 0 && map_rows == built_for_.map_rows && reach == built_for_.reach && strips == built_for_.strips &&
-      cells.size() == built_cells_.size() &&
-      std::memcmp(cells.data(), built_cells_.data(), cells.size_bytes()) == 0) {   // std::equal: 12 us at 10^4
+      same_rows(cells, built_rows_)) {
     restart();
     return count_;
   }
   built_for_ = {map_rows, reach, strips};
-  built_cells_.assign(cells.begin(), cells.end());
-  reach_ = reach;
+  built_rows_.resize(cells.size());
+  for (std::size_t r = 0; r < cells.size(); ++r) built_rows_[r] = cells[r][0];
   const int64_t n = static_cast<int64_t>(cells.size());
-  rows_.resize(cells.size());
-  for (std::size_t r = 0; r < cells.size(); ++r) rows_[r] = cells[r][0];
-  count_ = cut_strips(rows_, map_rows, reach, strips, row_count_, lo_);
+  count_ = cut_strips(cells, map_rows, reach, strips, row_count_, lo_);
   if (count_ > capacity_) {
     strips_ = std::make_unique<Strip[]>(static_cast<std::size_t>(count_));
     capacity_ = count_;
@@ -71,16 +78,12 @@ int32_t StripSchedule::build(std::span<const swarmcheck::exploration::CellIndex>
   for (int32_t k = 0; k < count_; ++k) start[static_cast<std::size_t>(k) + 1] += start[static_cast<std::size_t>(k)];
   members_.resize(static_cast<std::size_t>(n));
   border_.resize(static_cast<std::size_t>(n));
-  row_at_.resize(static_cast<std::size_t>(n));
-  column_at_.resize(static_cast<std::size_t>(n));
   std::vector<int64_t>& fill = fill_;
   fill.assign(start.begin(), start.end() - 1);
   {
     int64_t* const cursor = fill.data();
     int32_t* const members = members_.data();
     uint8_t* const border = border_.data();
-    int32_t* const row_at = row_at_.data();
-    int32_t* const column_at = column_at_.data();
     const int32_t* const strip_of = row_strip_.data();
     const uint8_t* const border_of = row_border_.data();
     const swarmcheck::exploration::CellIndex* const cell = cells.data();
@@ -89,8 +92,6 @@ int32_t StripSchedule::build(std::span<const swarmcheck::exploration::CellIndex>
       const int64_t p = cursor[strip_of[i]]++;
       members[p] = static_cast<int32_t>(r);
       border[p] = border_of[i];
-      row_at[p] = i;
-      column_at[p] = cell[r][1];
     }
   }
   for (int32_t k = 0; k < count_; ++k) {
@@ -132,7 +133,7 @@ void StripSchedule::restart() {
 
 bool StripSchedule::conflicts_pending(const Strip& s, int64_t p, std::size_t before) const {
   // Most robots have no pending robot within reach of their row: a look at the row counts.
-  const int32_t row = row_at_[static_cast<std::size_t>(p)];
+  const int32_t row = cell_at(p)[0];
   const int32_t i0 = std::max(s.lo, row - reach_), i1 = std::min(s.hi - 1, row + reach_);
   bool near = false;
   for (int32_t i = i0; i <= i1 && !near; ++i) near = s.pending_in_row[static_cast<std::size_t>(i - s.lo)] > 0;

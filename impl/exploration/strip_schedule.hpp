@@ -44,17 +44,18 @@
 namespace swarmcheck::impl::exploration {
 
 // Cuts the rows [0, map_rows) into at most `strips` strips of at least reach + 1 rows each,
-// balanced by the number of robots (rows[r] is robot r's row). Fills row_count (robots per row)
+// balanced by the number of robots (cells[r] is robot r's cell). Fills row_count (robots per row)
 // and lo (each strip's first row, then map_rows); returns the number of strips.
-int32_t cut_strips(std::span<const int32_t> rows, int32_t map_rows, int32_t reach, int32_t strips,
+int32_t cut_strips(std::span<const swarmcheck::exploration::CellIndex> cells, int32_t map_rows, int32_t reach, int32_t strips,
                    std::vector<int32_t>& row_count, std::vector<int32_t>& lo);
 
 class StripSchedule {
  public:
   // Cuts the rows [0, map_rows) into at most `strips` strips of at least reach + 1 rows each,
   // balanced by the number of robots (cells[r] is robot r's cell), and lists each strip's robots.
-  // Returns the number of strips made (1 means: no parallelism to be had). Given the cells of
-  // the last build again, it keeps that build's lists (10^6 robots: ~12 ms saved a step).
+  // Returns the number of strips made (1 means: no parallelism to be had). Given the rows of the
+  // last build again, it keeps that build's lists (10^6 robots: ~12 ms saved a step). `cells` is
+  // read again by run(): it must outlive the run, unchanged.
   int32_t build(std::span<const swarmcheck::exploration::CellIndex> cells, int32_t map_rows, int32_t reach,
                 int32_t strips);
 
@@ -66,7 +67,7 @@ class StripSchedule {
 
   // Robots a strip's own thread may set aside (a border robot whose neighbour is behind, and the
   // robots of its strip that conflict with one set aside) while it runs on.
-  static constexpr std::size_t kMaxPending = 32;
+  static constexpr std::size_t kMaxPending = 256;
 
  private:
   static constexpr int32_t kNone = INT32_MAX;
@@ -138,8 +139,13 @@ class StripSchedule {
   }
   // The robots at positions p and q may touch a cell in common.
   bool conflict(int64_t p, int64_t q) const {
-    return std::abs(row_at_[static_cast<std::size_t>(p)] - row_at_[static_cast<std::size_t>(q)]) <= reach_ &&
-           std::abs(column_at_[static_cast<std::size_t>(p)] - column_at_[static_cast<std::size_t>(q)]) <= reach_;
+    const swarmcheck::exploration::CellIndex& a = cell_at(p);
+    const swarmcheck::exploration::CellIndex& b = cell_at(q);
+    return std::abs(a[0] - b[0]) <= reach_ && std::abs(a[1] - b[1]) <= reach_;
+  }
+  // The cell of the robot at position p (looked up only around set-aside robots: not tabled).
+  const swarmcheck::exploration::CellIndex& cell_at(int64_t p) const {
+    return cells_[static_cast<std::size_t>(members_[static_cast<std::size_t>(p)])];
   }
   // The robot at p conflicts with a pending robot of strip s before position `before`.
   bool conflicts_pending(const Strip& s, int64_t p, std::size_t before) const;
@@ -170,16 +176,15 @@ class StripSchedule {
   struct BuiltFor {
     int32_t map_rows = 0, reach = 0, strips = 0;
   } built_for_;
-  std::vector<swarmcheck::exploration::CellIndex> built_cells_;   // the cells of the last build
+  std::vector<int32_t> built_rows_;       // the rows of the last build
+  std::span<const swarmcheck::exploration::CellIndex> cells_;   // the cells of the last build (the caller's)
   tbb::affinity_partitioner affinity_;   // strip k on the thread that had it last time (its cells' cache)
   std::unique_ptr<Strip[]> strips_;
   int32_t capacity_ = 0;
-  std::vector<int32_t> rows_;             // rows of the cells (the strips are cut by row)
   std::vector<int32_t> row_count_, lo_;   // robots per row; first row of each strip (+ map_rows)
   std::vector<int32_t> row_strip_;        // per row: its strip
   std::vector<uint8_t> row_border_;       // per row: bit kLower, bit kUpper (within reach of that edge)
   std::vector<int32_t> members_;          // robot indices, strip by strip, ascending in a strip
-  std::vector<int32_t> row_at_, column_at_;   // per position: the robot's cell
   std::vector<uint8_t> border_;           // per position: bit kLower, bit kUpper
   std::vector<int64_t> start_, fill_;         // each strip's first position; the filling cursor
 };
@@ -232,7 +237,7 @@ bool StripSchedule::try_pending(int32_t k, std::vector<Scratch>& scratch, Work& 
     const int64_t p = s.pending[i];
     // Runs if its neighbours are done and it conflicts with none of the pending before it.
     if (!neighbours_done(k, p) || conflicts_pending(s, p, i)) continue;
-    --s.pending_in_row[static_cast<std::size_t>(row_at_[static_cast<std::size_t>(p)] - s.lo)];
+    --s.pending_in_row[static_cast<std::size_t>(cell_at(p)[0] - s.lo)];
     s.pending[i] = kDone;   // before run_robot publishes: the smallest border robot still pending counts
     run_robot(k, p, scratch, work);
     ran = true;
@@ -263,7 +268,7 @@ void StripSchedule::run_own(int32_t k, std::vector<Scratch>& scratch, Work& work
                              (border_[static_cast<std::size_t>(p)] && !neighbours_done(k, p));
       if (must_wait) {
         s.pending.push_back(p);
-        ++s.pending_in_row[static_cast<std::size_t>(row_at_[static_cast<std::size_t>(p)] - s.lo)];
+        ++s.pending_in_row[static_cast<std::size_t>(cell_at(p)[0] - s.lo)];
       } else {
         run_robot(k, p, scratch, work);
       }

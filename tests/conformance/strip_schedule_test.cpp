@@ -1,7 +1,8 @@
 // The strip schedule (impl/exploration/strip_schedule.hpp) runs robots whose cells are within
 // reach of each other (Chebyshev distance) in index order, whatever the threads: checked on the
 // schedule itself, by the order in which it calls the work, on generated layouts; and again after
-// a build on the same cells, which keeps the last build's lists and only starts the strips again.
+// a build on the same rows (the same cells, or cells moved along their rows), which keeps the last
+// build's lists and only starts the strips again.
 // Layouts range from sparse to crowded (narrow maps, many robots), so that strips set robots aside
 // (and hit the limit of kMaxPending) and threads take over each other's strips.
 // (threads_test.cpp checks the simulation's bits.)
@@ -50,7 +51,7 @@ void check_order(const std::vector<CellIndex>& cells, int32_t reach, const std::
 
 }  // namespace
 
-RC_GTEST_PROP(StripSchedule, ConflictingRobotsRunInIndexOrderOnAFreshBuildAndOnARebuildOfTheSameCells, ()) {
+RC_GTEST_PROP(StripSchedule, ConflictingRobotsRunInIndexOrderOnAFreshBuildAndOnARebuildOfTheSameRows, ()) {
   const int32_t map = *rc::gen::inRange(4, 120);
   const int32_t columns = *rc::gen::inRange(1, 120);
   const int32_t reach = *rc::gen::inRange(1, 7);
@@ -66,6 +67,12 @@ RC_GTEST_PROP(StripSchedule, ConflictingRobotsRunInIndexOrderOnAFreshBuildAndOnA
   // The same cells again: the lists are kept, and a second run must be as good as the first.
   RC_ASSERT(s.build(cells, map, reach, strips) == count);
   check_order(cells, reach, run_order(s, arena, cells.size()));
+  // The same rows, other columns (the robots moved along their rows): the lists are kept, and the
+  // robots set aside are judged by their new cells.
+  std::vector<CellIndex> along = random_cells(map, columns, robots, seed + 77);
+  for (std::size_t r = 0; r < along.size(); ++r) along[r][0] = cells[r][0];
+  RC_ASSERT(s.build(along, map, reach, strips) == count);
+  check_order(along, reach, run_order(s, arena, along.size()));
   // Other cells (the robots moved): a build of its own.
   const std::vector<CellIndex> moved = random_cells(map, columns, robots, seed + 1'000'003);
   if (s.build(moved, map, reach, strips) > 1) check_order(moved, reach, run_order(s, arena, moved.size()));
