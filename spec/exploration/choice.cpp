@@ -161,9 +161,14 @@ ChoiceTerms choice_terms(const Params& p) {
   return ChoiceTerms{p.phi, eta_term, std::pow(1000.0, p.phi) * eta_term};
 }
 
-Choice choose(const RuleDescriptor& rules, const ChoiceTerms& terms, std::span<const Candidate> c,
-              const DrawSite& site) {
-  return choose_rule<num::Concrete>(rules, terms, c, site);
+// Flattened: choose_rule inlined here writes the fields straight into `out` (called, it returned
+// the Choice through the stack, the stall above).
+#if defined(__GNUC__)
+[[gnu::flatten]]
+#endif
+void choose_into(const RuleDescriptor& rules, const ChoiceTerms& terms, std::span<const Candidate> c,
+                 const DrawSite& site, Choice& out) {
+  out = choose_rule<num::Concrete>(rules, terms, c, site);
 }
 
 RobotDecision decide(const RuleDescriptor& rules, CellIndex current, std::span<const Candidate> c,

@@ -94,8 +94,18 @@ template <class D>
 ChoiceT<D> choose_rule(const RuleDescriptor& rules, const ChoiceTermsT<D>& terms,
                        std::span<const CandidateOf<D>> candidates, const DrawSiteOf<D>& site);
 
-Choice choose(const RuleDescriptor& rules, const ChoiceTerms& terms, std::span<const Candidate> candidates,
-              const DrawSite& site);
+// The concrete choice, written into `out`. (Returned by value from another translation unit, a
+// Choice was assembled on the stack by GCC 12 and loaded back as one 8-byte word from two 4-byte
+// stores, a store-forwarding stall that was a third of the choice's time in a profile; choose()
+// below is inline, so its caller reads the fields one by one.)
+void choose_into(const RuleDescriptor& rules, const ChoiceTerms& terms, std::span<const Candidate> candidates,
+                 const DrawSite& site, Choice& out);
+inline Choice choose(const RuleDescriptor& rules, const ChoiceTerms& terms, std::span<const Candidate> candidates,
+                     const DrawSite& site) {
+  Choice ch;
+  choose_into(rules, terms, candidates, site, ch);
+  return ch;
+}
 
 // What one robot's decision does to the map, from its choice and the rule set's effects.
 struct RobotDecision {
