@@ -66,7 +66,9 @@ class StripSchedule {
   int64_t run(tbb::task_arena& arena, std::vector<Scratch>& scratch, Work&& work, Ahead&& ahead);
 
   // Robots a strip's own thread may set aside (a border robot whose neighbour is behind, and the
-  // robots of its strip that conflict with one set aside) while it runs on.
+  // robots of its strip that conflict with one set aside) while it runs on. (With 32, 10^6 robots
+  // on 1024^2 waited ~17 times a stage with a full list and ran ~8 % slower than before the
+  // set-aside robots; with 256, about never.)
   static constexpr std::size_t kMaxPending = 256;
 
  private:
@@ -147,7 +149,8 @@ class StripSchedule {
   const swarmcheck::exploration::CellIndex& cell_at(int64_t p) const {
     return cells_[static_cast<std::size_t>(members_[static_cast<std::size_t>(p)])];
   }
-  // The robot at p conflicts with a pending robot of strip s before position `before`.
+  // The robot at position p conflicts with one of the first `before` entries of s.pending still
+  // pending.
   bool conflicts_pending(const Strip& s, int64_t p, std::size_t before) const;
 
   // Runs the robot at position p of strip k and publishes what it changed for the neighbours.

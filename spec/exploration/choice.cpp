@@ -161,8 +161,8 @@ ChoiceTerms choice_terms(const Params& p) {
   return ChoiceTerms{p.phi, eta_term, std::pow(1000.0, p.phi) * eta_term};
 }
 
-// Flattened: choose_rule inlined here writes the fields straight into `out` (called, it returned
-// the Choice through the stack, the stall above).
+// Flattened: choose_rule, inlined here, writes the fields straight into `out` (called, it returns
+// the Choice through the stack: the store-forwarding stall described at choose_into in choice.hpp).
 #if defined(__GNUC__)
 [[gnu::flatten]]
 #endif
