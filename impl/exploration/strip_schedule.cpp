@@ -48,8 +48,7 @@ int32_t StripSchedule::build(std::span<const swarmcheck::exploration::CellIndex>
     return count_;
   }
   built_for_ = {map_rows, reach, strips};
-  built_rows_.resize(cells.size());
-  for (std::size_t r = 0; r < cells.size(); ++r) built_rows_[r] = cells[r][0];
+  built_rows_.resize(cells.size());   // filled by the members' pass below
   const int64_t n = static_cast<int64_t>(cells.size());
   count_ = cut_strips(cells, map_rows, reach, strips, row_count_, lo_);
   if (count_ > capacity_) {
@@ -86,9 +85,11 @@ int32_t StripSchedule::build(std::span<const swarmcheck::exploration::CellIndex>
     uint8_t* const border = border_.data();
     const int32_t* const strip_of = row_strip_.data();
     const uint8_t* const border_of = row_border_.data();
+    int32_t* const built_row = built_rows_.data();
     const swarmcheck::exploration::CellIndex* const cell = cells.data();
     for (int64_t r = 0; r < n; ++r) {
       const int32_t i = cell[r][0];
+      built_row[r] = i;
       const int64_t p = cursor[strip_of[i]]++;
       members[p] = static_cast<int32_t>(r);
       border[p] = border_of[i];
