@@ -21,8 +21,9 @@ int main(int argc, char** argv) {
   app.footer(
       "Exit status: 0 ok; 1 a negative verdict (a divergence, a blocking or uncontrollable "
       "supervisor, a run not completed or stalled, a refuted obligation); 2 bad input or a "
-      "request refused (a budget, an output that is an input); 3 internal error (a bug: please "
-      "report it); 130 / 143 interrupted by SIGINT / SIGTERM (outputs left as they were).");
+      "request refused (a budget, an output that is an input, a FIFO or device as output); 3 "
+      "internal error (a bug: please report it); 130 / 143 / 129 interrupted by SIGINT / SIGTERM / "
+      "SIGHUP (outputs left as they were; serve exits 0).");
   app.set_version_flag("--version", "swarmcheck 0.1.0");
   // Usage errors read like every other error: one line, the same prefix.
   app.failure_message([](const CLI::App*, const CLI::Error& e) {

@@ -40,7 +40,7 @@ struct Limit {
     if (max_bytes == 0 || estimate <= static_cast<double>(max_bytes)) return;
     throw BudgetExceeded(where, done + ": about " + format_bytes(estimate) + " and growing, over the limit of " +
                                     format_bytes(static_cast<double>(max_bytes)) +
-                                    " (raise it with --memory-limit, e.g. --memory-limit 64G)");
+                                    " (raise it with --memory-limit, e.g. --memory-limit " + size_flag_value_at_least(2.0 * static_cast<double>(max_bytes)) + ")");
   }
 };
 

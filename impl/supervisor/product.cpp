@@ -256,7 +256,7 @@ Product product_with_tuples(const std::vector<const Fsm*>& parts,
                                                 std::to_string(table.size()) + " found, " + std::to_string(out.edge_event.size()) +
                                                 " transitions): about " + format_bytes(estimate) + " and growing, over the limit of " +
                                                 format_bytes(static_cast<double>(max_bytes)) +
-                                                " (raise it with --memory-limit, e.g. --memory-limit 64G)");
+                                                " (raise it with --memory-limit, e.g. --memory-limit " + size_flag_value_at_least(2.0 * static_cast<double>(max_bytes)) + ")");
     }
     std::copy(table.tuple(z), table.tuple(z) + k, cur.begin());
     bool marked = true;

@@ -2,6 +2,8 @@
 // Resource budgets: work whose size is known (or estimated) before it is allocated is refused
 // when it would not fit, with the estimate, the limit and the flag that raises it, instead of
 // dying in std::bad_alloc or taking the machine's memory. Refusal is bad input (exit status 2).
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <string>
@@ -23,6 +25,14 @@ inline std::string format_bytes(double bytes) {
   return text;
 }
 
+// A value for a size flag that is at least `bytes`, in whole units: "97G", "640M", "1M".
+inline std::string size_flag_value_at_least(double bytes) {
+  constexpr double kMiB = 1024.0 * 1024.0, kGiB = 1024.0 * kMiB;
+  if (!(bytes < 1e21)) return "0";   // beyond any machine: no limit at all
+  if (bytes > kGiB) return std::to_string(static_cast<std::uint64_t>(std::ceil(bytes / kGiB))) + "G";
+  return std::to_string(std::max<std::uint64_t>(1, static_cast<std::uint64_t>(std::ceil(bytes / kMiB)))) + "M";
+}
+
 // A limit refused: "<what> needs about <estimate>, over the <flag> limit of <limit> (raise it
 // with <flag> ...)". `where`: the input or option the size comes from.
 class BudgetExceeded : public InputError {
@@ -31,7 +41,7 @@ class BudgetExceeded : public InputError {
                  double limit_bytes, const std::string& flag)
       : InputError(where, what + " needs about " + format_bytes(estimate_bytes) + ", over the limit of " +
                               format_bytes(limit_bytes) + " (raise it with " + flag + ", e.g. " + flag +
-                              " 64G, or make the input smaller)") {}
+                              " " + size_flag_value_at_least(estimate_bytes) + ", or make the input smaller)") {}
   BudgetExceeded(const std::string& where, const std::string& message) : InputError(where, message) {}
 };
 

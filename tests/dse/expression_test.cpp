@@ -71,9 +71,9 @@ TEST(Expression, IntoCpsNamesTextAndFunctions) {
   EXPECT_EQ(e.names(), (std::vector<std::string>{"a2", "a1", "rule"}));
 }
 
-TEST(Expression, ErrorsNameTheColumnAndShowACaret) {
+TEST(Expression, ErrorsNameTheColumnAndQuoteTheConstraintOnOneLine) {
   EXPECT_EQ(expression_error_of("a1 < )"),
-            "c.json: parameterConstraints[0], column 6: expected a number, a name or '(', got ')'\n    a1 < )\n         ^");
+            "c.json: parameterConstraints[0], column 6: expected a number, a name or '(', got ')' in \"a1 < )\"");
   EXPECT_NE(expression_error_of("a1 + ").find("column 6: expected a number, a name or '(', got 'end of text'"), std::string::npos);
   EXPECT_NE(expression_error_of("a1 < a2 < 3").find("column 9: chained comparisons are not supported"), std::string::npos);
   EXPECT_NE(expression_error_of("foo > 1").find("column 1: unknown name 'foo' (known: a1, a2, rule)"), std::string::npos);
