@@ -1,10 +1,13 @@
 // swarmcheck conform / replay: the differential harness on the command line.
 #include "apps/swarmcheck/conform_verb.hpp"
 
+#include <fcntl.h>
 #include <fmt/core.h>
 #include <unistd.h>
 
 #include <algorithm>
+#include <cerrno>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <memory>
@@ -193,6 +196,29 @@ int conform_exploration(ConformArgs a, const mpi::Launch& launch, Json* json_out
   return report(a, r, Json(), json_out);
 }
 
+// --out, checked before the campaign (a counterexample may come after an hour of cases): an
+// existing folder that a file can be made in, or a folder that can be made (made and removed
+// again here: nothing is left behind when every case agrees).
+void check_counterexample_folder(const std::string& dir) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const fs::path d(dir);
+  if (fs::exists(d, ec)) {
+    if (!fs::is_directory(d, ec)) throw InputError(dir, "is not a folder (--out names the folder for counterexample traces)");
+    const fs::path probe = d / (".swarmcheck-probe-" + std::to_string(::getpid()));
+    const int fd = ::open(probe.c_str(), O_WRONLY | O_CREAT | O_EXCL, 0600);
+    if (fd < 0) throw InputError(dir, "cannot write counterexample traces in this folder: " + std::string(std::strerror(errno)));
+    ::close(fd);
+    fs::remove(probe, ec);
+    return;
+  }
+  fs::path first_made = d;   // the outermost folder that does not exist yet
+  for (fs::path p = d.parent_path(); !p.empty() && !fs::exists(p, ec); p = p.parent_path()) first_made = p;
+  if (!fs::create_directories(d, ec) || ec)
+    throw InputError(dir, "cannot make the folder for counterexample traces: " + (ec ? ec.message() : std::string("unknown error")));
+  fs::remove_all(first_made, ec);   // made only to know it can be; made again if a counterexample comes
+}
+
 // Every system asked for, each with its own campaign from the one seed; under mpirun only the
 // exploration campaign is split, rank 0 runs the others. Exit 1 if any finds a difference.
 int conform(const ConformArgs& a) {
@@ -200,6 +226,7 @@ int conform(const ConformArgs& a) {
   const std::vector<std::string> systems =
       a.system == "all" ? std::vector<std::string>{"exploration", "automata", "missions"} : std::vector<std::string>{a.system};
   const mpi::Launch launch = mpi::launch_from_environment();
+  if (launch.rank == 0) check_counterexample_folder(a.options.out_dir);
   const bool several = systems.size() > 1;
   Json combined = Json::object();
   int status = 0;

@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <chrono>
 #include <csignal>
@@ -90,12 +91,34 @@ class MpiExecutor : public Executor {
   const std::atomic<bool>& stop_;
 };
 
+// The output folder's files (journal.jsonl besides: written as the sweep goes).
+constexpr std::array<const char*, 4> kOutputFiles = {"results.csv", "results.json", "report.svg", "report.html"};
+
+// Every content made before the first file is written, so that nothing is left half-written.
+// (Paths in results.json are the user's bytes: dump_text writes U+FFFD for any that are not UTF-8.)
 void write_outputs(const std::string& dir, const DesignSpace& space, const DseResults& r, const ResultsContext& ctx) {
   const fs::path d(dir);
-  io::write_file_atomically((d / "results.csv").string(), results_csv(space, r));
-  io::write_file_atomically((d / "results.json").string(), results_json(space, r, ctx).dump(2) + "\n");
-  io::write_file_atomically((d / "report.svg").string(), pareto_svg(space, r));
-  io::write_file_atomically((d / "report.html").string(), report_html(space, r, ctx));
+  const std::array<std::string, kOutputFiles.size()> contents = {
+      results_csv(space, r), json_io::dump_text(results_json(space, r, ctx), 2) + "\n", pareto_svg(space, r),
+      report_html(space, r, ctx)};
+  for (std::size_t k = 0; k < kOutputFiles.size(); ++k) io::write_file_atomically((d / kOutputFiles[k]).string(), contents[k]);
+}
+
+// Before the sweep: each output is a file (or nothing yet), and none is an input, through a link
+// or not (a link in the folder to the scenario would have had the results written over it).
+void check_output_folder(const DseArgs& a) {
+  const std::vector<std::string> inputs = {a.config_path, a.scenario_path};
+  std::vector<const char*> names(kOutputFiles.begin(), kOutputFiles.end());
+  names.push_back("journal.jsonl");
+  for (const char* name : names) {
+    const std::string p = (fs::path(a.out_dir) / name).string();
+    io::refuse_output_that_is_an_input(p, inputs);
+    std::error_code ec;
+    const fs::file_status st = fs::status(p, ec);
+    if (fs::is_directory(st)) throw InputError(p, "is a folder: the DSE writes a file there (choose another -o)");
+    if (fs::exists(st) && !fs::is_regular_file(st))
+      throw InputError(p, "is not a regular file (a FIFO or a device): the DSE writes a file there (choose another -o)");
+  }
 }
 
 // The ranking's first rows as a table that fits a screen.
@@ -177,6 +200,7 @@ int run_rank0(const DseArgs& a, const DesignSpace& space, Executor& executor, co
   std::error_code ec;
   fs::create_directories(a.out_dir, ec);
   if (ec) throw InputError(a.out_dir, "cannot create the output folder: " + ec.message());
+  check_output_folder(a);
   ProgressBar bar(space.config().algorithm == Algorithm::genetic);
   SweepOptions options{(fs::path(a.out_dir) / "journal.jsonl").string(), &stop.flag(),
                        [&bar](const SweepProgress& p) { bar.update(p); }};
@@ -194,7 +218,7 @@ int run_rank0(const DseArgs& a, const DesignSpace& space, Executor& executor, co
   const ResultsContext ctx{a.config_path, a.scenario_path.empty() ? "default scenario" : a.scenario_path};
   write_outputs(a.out_dir, space, results, ctx);
   if (a.json)
-    fmt::print("{}\n", results_json(space, results, ctx).dump());
+    fmt::print("{}\n", json_io::dump_text(results_json(space, results, ctx)));
   else
     print_summary(a, space, results, outcome, seconds, workers);
   return 0;

@@ -7,6 +7,7 @@
 
 #include "apps/swarmcheck/verb.hpp"
 #include "impl/io/atomic_file.hpp"
+#include "swarmcheck/mission.hpp"
 #include "views/edit.hpp"
 
 namespace swarmcheck::cli {
@@ -20,6 +21,8 @@ struct EditOptions {
 int run_edit(const EditOptions& o) {
   io::refuse_output_that_is_an_input(o.out, {o.file});
   const views::Page page = views::edit_page(o.file);
+  if (page.data["kind"].get<std::string>() != "editor")   // a mission: its .fsm is an input too
+    io::refuse_output_that_is_an_input(o.out, swarmcheck::mission::mission_input_files(o.file));
   io::write_file_atomically(o.out, views::assemble_page(page));
   fmt::print("{}: {} for {}\n", o.out, page.data["kind"].get<std::string>() == "editor" ? "scenario editor" : "mission editor",
              o.file.empty() ? "the default scenario" : o.file);

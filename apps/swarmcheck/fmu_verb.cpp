@@ -4,6 +4,8 @@
 
 #include <fmt/core.h>
 
+#include <filesystem>
+
 #include <memory>
 #include <optional>
 
@@ -32,6 +34,8 @@ int fmu_export(const FmuExportOptions& o) {
   ex::Scenario s = o.scenario_path.empty() ? ex::default_scenario() : ex::load_scenario(o.scenario_path);
   if (o.robots) s = fmi::scenario_with_robots(s, *o.robots);
   if (!o.intocps.empty()) {
+    for (const char* name : {"Environment.fmu", "Controller.fmu", "Body.fmu", "multimodel.json", "coe.json"})
+      io::refuse_output_that_is_an_input((std::filesystem::path(o.intocps) / name).string(), {o.scenario_path});
     fmi::write_intocps(s, o.handshake == "epoch" ? fmi::Handshake::epoch : fmi::Handshake::flag, o.intocps);
     fmt::print("wrote {}/: Environment.fmu, Controller.fmu, Body.fmu, multimodel.json, coe.json ({} robots, {} handshake)\n",
                o.intocps, s.robots.size(), o.handshake);

@@ -106,8 +106,10 @@ double time_in(const sm::RunResult& r, const std::string& name, sm::Activity a) 
 }
 
 int run_run(const RunOptions& o) {
-  impl::io::refuse_output_that_is_an_input(o.trace, {o.file});
-  impl::io::refuse_output_that_is_an_input(o.svg, {o.file, o.trace});
+  const std::vector<std::string> inputs = sm::mission_input_files(o.file);   // the mission and its .fsm
+  impl::io::refuse_output_that_is_an_input(o.trace, inputs);
+  impl::io::refuse_output_that_is_an_input(o.svg, inputs);
+  impl::io::refuse_output_that_is_another_output(o.svg, "--svg", o.trace, "--trace");
   const sm::Mission m = sm::load_mission(o.file);
   if (!(o.dt > 0) || !std::isfinite(o.dt)) throw InputError("--dt", "expected a step in seconds > 0");
   if (!(o.max_time > 0) || !std::isfinite(o.max_time)) throw InputError("--max-time", "expected a time in seconds > 0");
@@ -211,7 +213,7 @@ void add_mission_verb(CLI::App& app, int& exit_code) {
   run->add_option("--max-time", ro->max_time, "time limit, s (default 3600)")
       ->check(CLI::Range(0.0, 1e7));
   add_budget_options(run, ro->budgets, true);
-  run->add_option("--seed", ro->seed, "seed of the range sensor's noise (default 1)");
+  run->add_option("--seed", ro->seed, "seed of the range sensor's noise (default 1)")->check(seed_validator());
   run->add_option("--speed", ro->speed, "kinematic body speed, m/s (default 0.5)")
       ->check(CLI::Range(1e-3, 100.0));
   run->add_flag("--json", ro->json, "print a JSON summary");

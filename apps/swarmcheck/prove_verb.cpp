@@ -141,7 +141,14 @@ void add_prove_verb(CLI::App& app, int& exit_code) {
   sub->add_flag("--json", opts->json, "Print the results as JSON");
   sub->add_option("--timeout", opts->timeout_s,
                   "Seconds per obligation before the watchdog kills its prover (default 45)")
-      ->check(CLI::PositiveNumber);
+      ->check(CLI::Validator(
+          [](const std::string& text) -> std::string {
+            // NaN passes every range check, and a huge value overflows the watchdog's deadline.
+            const double v = std::strtod(text.c_str(), nullptr);
+            if (!(v > 0 && v <= 86400)) return "expected seconds in (0, 86400], got " + text;
+            return {};
+          },
+          "SECONDS"));
   sub->callback([opts, &exit_code] { exit_code = guarded([&] { return run_prove(*opts); }); });
 }
 

@@ -184,7 +184,8 @@ int run(const ExplorationRunOptions& o) {
   if (o.trace_field > 0 && o.trace_path.empty()) throw InputError("--trace-field", "needs --trace FILE");
   if (o.stall_window < 0) throw InputError("--stall-window", "expected a number of steps >= 0 (0: never stop early)");
   impl::io::refuse_output_that_is_an_input(o.trace_path, {o.scenario_path});
-  impl::io::refuse_output_that_is_an_input(o.svg_path, {o.scenario_path, o.trace_path});
+  impl::io::refuse_output_that_is_an_input(o.svg_path, {o.scenario_path});
+  impl::io::refuse_output_that_is_another_output(o.svg_path, "--svg", o.trace_path, "--trace");
   const ValidScenario valid = resolve_scenario(o);
   const Scenario& s = valid.get();
   const std::string where = o.scenario_path.empty() ? "default scenario" : o.scenario_path;

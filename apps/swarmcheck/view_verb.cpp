@@ -13,6 +13,7 @@
 #include "spec/util/input_error.hpp"
 #include "spec/util/json_text.hpp"
 #include "proofs/obligations/handshake_trace.hpp"
+#include "swarmcheck/mission.hpp"
 #include "views/view.hpp"
 
 namespace swarmcheck::cli {
@@ -46,6 +47,8 @@ int view_dse_folder(const ViewCliOptions& o) {
 
 int run_view(const ViewCliOptions& o) {
   impl::io::refuse_output_that_is_an_input(o.out, {o.file, o.view.mission_path});
+  if (!o.view.mission_path.empty())   // and the .fsm the mission names
+    impl::io::refuse_output_that_is_an_input(o.out, swarmcheck::mission::mission_input_files(o.view.mission_path));
   if (std::filesystem::is_directory(o.file)) return view_dse_folder(o);
   const std::string text = views::read_text_file(o.file, "file to view");
   const views::ViewKind kind = views::detect_view_kind(text, o.file);

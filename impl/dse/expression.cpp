@@ -148,7 +148,29 @@ class Parser {
     return std::any_of(ops.begin(), ops.end(), [&](const char* o) { return t.text == o; });
   }
 
+  // Parsing and evaluating recurse once per level: an expression nested deeper (parentheses,
+  // prefix operators, or a long chain of one operator, a tree as deep as it is long) is refused
+  // rather than allowed to overflow the stack (a 5 000-level constraint crashed `dse`).
+  static constexpr int32_t kMaxDepth = 256;
+  void too_deep() const {
+    fail(tokens_[std::min(pos_, tokens_.size() - 1)].column,
+         "nested deeper than " + std::to_string(kMaxDepth) + " levels (parentheses, operators or a chain of them)");
+  }
+  struct Deeper {
+    explicit Deeper(Parser& p) : parser(p) {
+      if (++parser.depth_ > kMaxDepth) parser.too_deep();
+    }
+    ~Deeper() { --parser.depth_; }
+    Deeper(const Deeper&) = delete;
+    Deeper& operator=(const Deeper&) = delete;
+    Parser& parser;
+  };
+
   int32_t add(Expression::Op op, ValueType type, std::vector<int32_t> children = {}) {
+    int32_t depth = 1;
+    for (int32_t c : children) depth = std::max(depth, 1 + node_depth_[static_cast<std::size_t>(c)]);
+    if (depth > kMaxDepth) too_deep();
+    node_depth_.push_back(depth);
     Expression::Node n;
     n.op = op;
     n.type = type;
@@ -164,6 +186,7 @@ class Parser {
   }
 
   int32_t parse_or() {
+    const Deeper deeper(*this);
     int32_t left = parse_and();
     while (is_op(peek(), {"or", "||"})) {
       const Token t = tokens_[pos_++];
@@ -190,6 +213,7 @@ class Parser {
   int32_t parse_not() {
     if (is_op(peek(), {"not", "!"})) {
       const Token t = tokens_[pos_++];
+      const Deeper deeper(*this);
       const int32_t inner = parse_not();
       expect_type(inner, ValueType::boolean, t.column, "'" + t.text + "'");
       return add(Expression::Op::logical_not, ValueType::boolean, {inner});
@@ -241,6 +265,7 @@ class Parser {
   int32_t parse_unary() {
     if (is_op(peek(), {"-", "+"})) {
       const Token t = tokens_[pos_++];
+      const Deeper deeper(*this);
       const int32_t inner = parse_unary();
       expect_type(inner, ValueType::number, t.column, "unary '" + t.text + "'");
       return t.text == "-" ? add(Expression::Op::neg, ValueType::number, {inner}) : inner;
@@ -322,6 +347,8 @@ class Parser {
   std::vector<Token> tokens_;
   std::size_t pos_ = 0;
   Expression* out_ = nullptr;
+  int32_t depth_ = 0;                 // parse_or / prefix-operator recursion, now
+  std::vector<int32_t> node_depth_;   // per node: the height of its subtree
 };
 
 Expression Expression::parse(const std::string& text, const NameTypes& types, const std::string& where,

@@ -107,4 +107,12 @@ void refuse_output_that_is_an_input(const std::string& output, const std::vector
   }
 }
 
+void refuse_output_that_is_another_output(const std::string& output, const std::string& flag,
+                                          const std::string& other, const std::string& other_flag) {
+  if (output.empty() || other.empty()) return;
+  std::error_code ec;
+  if (output == other || std::filesystem::equivalent(output, other, ec))
+    throw InputError(output, "is also the " + other_flag + " output of this command: give " + flag + " another file");
+}
+
 }  // namespace swarmcheck::impl::io

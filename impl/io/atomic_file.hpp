@@ -43,6 +43,10 @@ void write_file_atomically(const std::string& path, const std::string& content);
 // InputError when `output` names the same file as one of `inputs` (by path or through a link):
 // a command would otherwise replace the file it reads. Empty paths are ignored.
 void refuse_output_that_is_an_input(const std::string& output, const std::vector<std::string>& inputs);
+// Throws InputError when `output` (given with `flag`) is the same file as `other` (given with
+// `other_flag`), another output of the same command: one would overwrite the other.
+void refuse_output_that_is_another_output(const std::string& output, const std::string& flag,
+                                          const std::string& other, const std::string& other_flag);
 
 }  // namespace swarmcheck::impl::io
 

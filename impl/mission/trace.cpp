@@ -31,7 +31,7 @@ TraceWriter::TraceWriter(std::ostream& out, const swarmcheck::mission::Mission& 
                   {"robots", names},
                   {"body", json_io::enum_to_string(o.body)},
                   {"dt", o.dt_s}};
-  out_ << h.dump() << '\n';
+  out_ << json_io::dump_text(h) << '\n';   // the mission's path may not be UTF-8
 }
 
 void TraceWriter::on_event(const EventRecord& e) {

@@ -52,6 +52,104 @@ TEST(Hardening, ASeedOutsideZeroToTwoToThe64IsRefusedNotWrapped) {
   }
   EXPECT_EQ(run_binary(kBin, "run --steps 1 --seed 18446744073709551615").status, 1);   // accepted; 1 step does not complete
   EXPECT_EQ(run_binary(kBin, "conform --system exploration --cases 1 --seed -1").status, 2);
+  const std::string mission = kSource + "/scenarios/thesis/thesis-mission.json";
+  for (const std::string& seed : std::vector<std::string>{"-1", "18446744073709551616", "0x10"})
+    EXPECT_EQ(run_binary(kBin, "mission run " + mission + " --max-time 1 --seed " + seed).status, 2) << seed;
+}
+
+TEST(Hardening, TheFsmAMissionNamesIsAnInputThatNoOutputMayReplace) {
+  const fs::path d = scratch() / "mission-inputs";
+  fs::create_directories(d);
+  const std::string mission = (d / "m.json").string();
+  fs::copy_file(kSource + "/scenarios/thesis/thesis-mission.json", mission, fs::copy_options::overwrite_existing);
+  fs::copy_file(kSource + "/scenarios/thesis/control2.fsm", d / "control2.fsm", fs::copy_options::overwrite_existing);
+  const std::string fsm = (d / "control2.fsm").string();
+  const std::string before = read(fsm);
+  const std::string trace = (d / "m.jsonl").string();
+  ASSERT_NE(run_binary(kBin, "mission run " + mission + " --max-time 5 --trace " + trace).status, 2);
+  for (const std::string& args : std::vector<std::string>{"mission run " + mission + " --max-time 5 --trace " + fsm,
+                                 "mission run " + mission + " --max-time 5 --svg " + fsm,
+                                 "edit " + mission + " -o " + fsm,
+                                 "view " + trace + " --mission " + mission + " -o " + fsm}) {
+    const auto r = run_binary(kBin, args);
+    EXPECT_EQ(r.status, 2) << args << ": " << r.out;
+    EXPECT_NE(r.out.find("is also an input of this command"), std::string::npos) << args << ": " << r.out;
+  }
+  EXPECT_EQ(read(fsm), before);
+  const auto both = run_binary(kBin, "mission run " + mission + " --max-time 5 --trace " + trace + " --svg " + trace);
+  EXPECT_EQ(both.status, 2);
+  EXPECT_NE(both.out.find("is also the --trace output of this command: give --svg another file"), std::string::npos) << both.out;
+}
+
+TEST(Hardening, DseAndFmuOutputsThatAreInputsThroughALinkOrByNameAreRefusedBeforeAnythingRuns) {
+  const fs::path d = scratch() / "dse-outputs";
+  fs::remove_all(d);
+  fs::create_directories(d / "linked");
+  const std::string config = (d / "c.dse.json").string(), base = (d / "base.json").string();
+  fs::copy_file(kSource + "/scenarios/thesis/dse/ertu.dse.json", config);
+  fs::copy_file(kSource + "/scenarios/thesis/dse/base.json", base);
+  const std::string base_before = read(base);
+  for (const char* name : {"results.csv", "report.svg", "journal.jsonl"}) {
+    fs::remove(d / "linked" / "results.csv");
+    fs::remove(d / "linked" / "report.svg");
+    fs::remove(d / "linked" / "journal.jsonl");
+    fs::create_symlink(base, d / "linked" / name);
+    const auto r = run_binary(kBin, "dse " + config + " --scenario " + base + " -o " + (d / "linked").string());
+    EXPECT_EQ(r.status, 2) << name << ": " << r.out;
+    EXPECT_NE(r.out.find("is also an input of this command"), std::string::npos) << r.out;
+    EXPECT_EQ(read(base), base_before) << name;
+  }
+  fs::create_directories(d / "folder" / "results.csv");
+  const auto folder = run_binary(kBin, "dse " + config + " --scenario " + base + " -o " + (d / "folder").string());
+  EXPECT_EQ(folder.status, 2);
+  EXPECT_NE(folder.out.find("results.csv: is a folder"), std::string::npos) << folder.out;
+  EXPECT_FALSE(fs::exists(d / "folder" / "journal.jsonl"));   // refused before the sweep
+  fs::create_directories(d / "fmus");
+  fs::copy_file(base, d / "fmus" / "multimodel.json");
+  const auto fmu = run_binary(kBin, "fmu export --intocps " + (d / "fmus").string() + " --scenario " + (d / "fmus" / "multimodel.json").string());
+  EXPECT_EQ(fmu.status, 2) << fmu.out;
+  EXPECT_EQ(read(d / "fmus" / "multimodel.json"), base_before);
+  EXPECT_FALSE(fs::exists(d / "fmus" / "Environment.fmu"));
+}
+
+TEST(Hardening, APathThatIsNotUtf8IsWrittenIntoJsonWithTheReplacementCharacterNotAnInternalError) {
+  const fs::path d = scratch() / "utf8-paths";
+  fs::remove_all(d);
+  fs::create_directories(d);
+  const std::string config = (d / "c\xff.dse.json").string();
+  fs::copy_file(kSource + "/scenarios/thesis/dse/ertu.dse.json", config);
+  fs::copy_file(kSource + "/scenarios/thesis/dse/base.json", d / "base.json");
+  const auto r = run_binary(kBin, "dse '" + config + "' --scenario " + (d / "base.json").string() + " -o " + (d / "out").string());
+  EXPECT_EQ(r.status, 0) << r.out;
+  EXPECT_NE(read(d / "out" / "results.json").find("c\xEF\xBF\xBD.dse.json"), std::string::npos);
+  const std::string mission = (d / "m\xff.json").string();
+  fs::copy_file(kSource + "/scenarios/thesis/thesis-mission.json", mission);
+  fs::copy_file(kSource + "/scenarios/thesis/control2.fsm", d / "control2.fsm");
+  const auto m = run_binary(kBin, "mission run '" + mission + "' --max-time 5 --trace " + (d / "m.jsonl").string());
+  EXPECT_NE(m.status, 3) << m.out;
+  EXPECT_NE(m.status, 2) << m.out;
+}
+
+TEST(Hardening, ConformRefusesAnOutFolderItCouldNotWriteBeforeRunningAnyCase) {
+  const fs::path d = scratch();
+  const std::string file = write(d / "plain-file", "x");
+  for (const std::string& out : std::vector<std::string>{file, "/proc/no-such/folder"}) {
+    const auto r = run_binary(kBin, "conform --system automata --cases 1 --out " + out);
+    EXPECT_EQ(r.status, 2) << out << ": " << r.out;
+    EXPECT_EQ(r.out.rfind("swarmcheck: error: " + out + ": ", 0), 0U) << r.out;
+  }
+  const fs::path fresh = d / "fresh" / "deeper";
+  fs::remove_all(d / "fresh");
+  EXPECT_EQ(run_binary(kBin, "conform --system automata --cases 1 --out " + fresh.string()).status, 0);
+  EXPECT_FALSE(fs::exists(d / "fresh"));   // checked by making it, and nothing left when all agree
+}
+
+TEST(Hardening, ProveRefusesATimeoutThatIsNotANumberOfSecondsInRange) {
+  for (const std::string& t : std::vector<std::string>{"nan", "0", "-1", "1e18", "inf"}) {
+    const auto r = run_binary(kBin, "prove --only servo-saturation --timeout " + t);
+    EXPECT_EQ(r.status, 2) << t << ": " << r.out;
+    EXPECT_NE(r.out.find("--timeout: expected seconds in (0, 86400], got " + t), std::string::npos) << r.out;
+  }
 }
 
 TEST(Hardening, AnOutputThatIsAlsoAnInputIsRefusedAndTheInputKept) {

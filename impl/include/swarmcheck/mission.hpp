@@ -30,6 +30,10 @@ namespace swarmcheck::mission {
 // Reads the mission file and the .fsm it names (relative to the mission file's folder) and runs
 // every check of check_mission.
 Mission load_mission(const std::string& path);
+// The files load_mission(path) reads: the mission file and the .fsm it names (for a command's
+// check that none of its outputs is one of its inputs). Throws InputError as load_mission does
+// when the mission file cannot be read or parsed.
+std::vector<std::string> mission_input_files(const std::string& path);
 
 // The exact planner: best-first Pareto label setting over (FSM state, each robot's position).
 // It keeps its own copy of the mission, compiles the FSM once, and remembers plans per query.
