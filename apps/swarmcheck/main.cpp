@@ -1,6 +1,10 @@
 // swarmcheck: the command line. One file per verb; this file only wires them.
 #include <CLI/CLI.hpp>
 
+#include <cstdio>
+#include <string>
+#include <vector>
+
 #include "apps/swarmcheck/conform_verb.hpp"
 #include "apps/swarmcheck/dse_verb.hpp"
 #include "apps/swarmcheck/edit_verb.hpp"
@@ -11,6 +15,7 @@
 #include "apps/swarmcheck/run_verb.hpp"
 #include "apps/swarmcheck/serve_verb.hpp"
 #include "apps/swarmcheck/view_verb.hpp"
+#include "apps/swarmcheck/verb.hpp"
 #include "impl/io/interrupt.hpp"
 
 int main(int argc, char** argv) {
@@ -42,6 +47,27 @@ int main(int argc, char** argv) {
   swarmcheck::cli::add_serve_verb(app, exit_code);
   swarmcheck::cli::add_fmu_verb(app, exit_code);
   swarmcheck::cli::add_cosim_verb(app, exit_code);
+  // A verb that is not one (CLI11 would only say "A subcommand is required"): named, with the
+  // verbs there are at that level.
+  CLI::App* level = &app;
+  std::string path = "swarmcheck";
+  for (int i = 1; i < argc && argv[i][0] != '-'; ++i) {
+    const std::vector<CLI::App*> verbs = level->get_subcommands([](CLI::App*) { return true; });
+    if (verbs.empty()) break;   // a verb's own arguments
+    CLI::App* next = nullptr;
+    std::string names;
+    for (CLI::App* v : verbs) {
+      if (v->check_name(argv[i])) next = v;
+      names += (names.empty() ? "" : ", ") + v->get_name();
+    }
+    if (!next) {
+      std::fprintf(stderr, "swarmcheck: error: unknown verb '%s' for %s (the verbs: %s)\nRun with --help for more information.\n",
+                   swarmcheck::cli::printable_message(argv[i]).c_str(), path.c_str(), names.c_str());
+      return 2;
+    }
+    path += " " + next->get_name();
+    level = next;
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

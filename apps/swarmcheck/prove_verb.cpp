@@ -134,7 +134,8 @@ void add_prove_verb(CLI::App& app, int& exit_code) {
   auto opts = std::make_shared<ProveOptions>();
   CLI::App* sub = app.add_subcommand(
       "prove", "Check the Z3 proof obligations (servo, atan2 fix, handshake, pheromone, occupancy)");
-  sub->add_option("--only", opts->only, "Check only the obligation with this name");
+  sub->add_option("--only", opts->only, "Check only the obligation with this name")
+      ->check(CLI::Validator([](const std::string& t) { return t.empty() ? std::string("expected an obligation's name, got nothing") : std::string(); }, "NAME"));
   sub->add_option("--smt2", opts->smt2_dir, "Write every query as SMT-LIB2 into this folder");
   sub->add_option("--trace-dir", opts->trace_dir,
                   "Write the counterexample trace of each refuted protocol obligation here");

@@ -180,7 +180,7 @@ int run_with(conformance::exploration::Simulation& sim, const Scenario& s, const
 
 int run(const ExplorationRunOptions& o) {
   if (o.trace_every < 1) throw InputError("--trace-every", "expected an integer >= 1");
-  if (o.trace_field < 0) throw InputError("--trace-field", "expected an integer >= 1");
+  if (o.trace_field < 0) throw InputError("--trace-field", "expected an integer >= 1 (every K-th step; 0: no field records)");
   if (o.trace_field > 0 && o.trace_path.empty()) throw InputError("--trace-field", "needs --trace FILE");
   if (o.stall_window < 0) throw InputError("--stall-window", "expected a number of steps >= 0 (0: never stop early)");
   impl::io::refuse_output_that_is_an_input(o.trace_path, {o.scenario_path});

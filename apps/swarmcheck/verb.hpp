@@ -131,6 +131,8 @@ inline std::uint64_t parse_size(const std::string& text, const std::string& flag
   else if (unit == "T") scale = 1024.0 * 1024 * 1024 * 1024;
   else if (!unit.empty()) throw InputError(flag, expected);
   if (!(value >= 0) || value * scale > 1.8e19) throw InputError(flag, expected);
+  // Under one byte but not 0 would truncate to 0, which turns the limit off: not what was asked.
+  if (value > 0 && value * scale < 1) throw InputError(flag, expected);
   return static_cast<std::uint64_t>(value * scale);
 }
 

@@ -6,6 +6,7 @@
 #include <zip.h>
 
 #include <cstdlib>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <memory>
@@ -41,8 +42,14 @@ std::string file_uri(const std::string& path) {
   return out + "/";
 }
 
-// Unpacks every entry of the archive under dir; refuses entries that would land outside it.
+// An FMU's files take a few MB (this tool's) to some hundreds (resources of others'); more than
+// this is refused as the archive is read (a 5 MB zip of zeros unpacked to 5 GiB in /tmp before).
+constexpr std::uint64_t kMaxUnpackedBytes = std::uint64_t{1} << 30;
+
+// Unpacks every entry of the archive under dir; refuses entries that would land outside it, and
+// archives that unpack to more than kMaxUnpackedBytes.
 void unpack(const std::string& fmu, const std::string& dir) {
+  std::uint64_t unpacked = 0;
   int error = 0;
   zip_t* archive = zip_open(fmu.c_str(), ZIP_RDONLY, &error);
   if (!archive) {
@@ -73,7 +80,12 @@ void unpack(const std::string& fmu, const std::string& dir) {
     std::ofstream out(target, std::ios::binary);
     char buffer[1 << 16];
     zip_int64_t got = 0;
-    while ((got = zip_fread(in, buffer, sizeof buffer)) > 0) out.write(buffer, got);
+    while ((got = zip_fread(in, buffer, sizeof buffer)) > 0) {
+      unpacked += static_cast<std::uint64_t>(got);
+      if (unpacked > kMaxUnpackedBytes)
+        throw InputError(fmu, "unpacks to more than 1 GiB (at archive entry '" + name + "'): refused as a zip bomb");
+      out.write(buffer, got);
+    }
     if (got < 0 || !out) throw InputError(fmu, "cannot unpack archive entry '" + name + "'");
   }
 }

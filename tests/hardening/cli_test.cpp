@@ -199,3 +199,21 @@ TEST(Hardening, ATraceRecordWithAFieldLeftOutIsRejectedNotReplayedAsAgreeing) {
   const auto b = run_binary(kBin, "replay " + bare);
   EXPECT_EQ(b.status, 2) << b.out;
 }
+
+TEST(Hardening, AnUnknownVerbIsNamedWithTheVerbsThereAreAndEmptyOrSubByteValuesAreRefused) {
+  const auto top = run_binary(kBin, "zzz");
+  EXPECT_EQ(top.status, 2);
+  EXPECT_EQ(top.out.rfind("swarmcheck: error: unknown verb 'zzz' for swarmcheck (the verbs: run, conform, replay, fsm,", 0), 0U) << top.out;
+  const auto fsm = run_binary(kBin, "fsm zzz");
+  EXPECT_EQ(fsm.status, 2);
+  EXPECT_NE(fsm.out.find("unknown verb 'zzz' for swarmcheck fsm (the verbs: check, product,"), std::string::npos) << fsm.out;
+  const auto limit = run_binary(kBin, "run --steps 1 --memory-limit 0.5");   // would truncate to 0: no limit at all
+  EXPECT_EQ(limit.status, 2);
+  EXPECT_NE(limit.out.find("--memory-limit: expected a size"), std::string::npos) << limit.out;
+  const auto only = run_binary(kBin, "prove --only ''");   // not every obligation
+  EXPECT_EQ(only.status, 2);
+  EXPECT_NE(only.out.find("--only: expected an obligation's name, got nothing"), std::string::npos) << only.out;
+  const auto bind = run_binary(kBin, "serve --port 0 --bind ''");
+  EXPECT_EQ(bind.status, 2);
+  EXPECT_NE(bind.out.find("--bind: expected an address"), std::string::npos) << bind.out;
+}
