@@ -273,6 +273,11 @@ int run_synth(const FsmOptions& o) {
 
 int run_export(const FsmOptions& o) {
   const Automaton a = sv::read_fsm_file(o.files.front());
+  // dot takes minutes (and gigabytes, or crashes) on big automata: refused, as `view` declines.
+  if (const std::size_t n = sv::transition_count(a); o.to == "svg" && n > views::kLayoutTransitionsMax)
+    throw InputError(o.files.front(), fmt::format("{} transitions, more than the {} that dot lays out in reasonable time: "
+                                                  "export --to dot and lay it out yourself, or `swarmcheck view` it (a "
+                                                  "searchable list)", n, views::kLayoutTransitionsMax));
   const std::string text = o.to == "dot"    ? sv::to_dot(a)
                            : o.to == "json" ? sv::to_json_text(a)
                            : o.to == "svg"  ? views::fsm_svg(a)

@@ -217,3 +217,18 @@ TEST(Hardening, AnUnknownVerbIsNamedWithTheVerbsThereAreAndEmptyOrSubByteValuesA
   EXPECT_EQ(bind.status, 2);
   EXPECT_NE(bind.out.find("--bind: expected an address"), std::string::npos) << bind.out;
 }
+
+TEST(Hardening, AnSvgExportOfMoreTransitionsThanDotLaysOutInReasonableTimeIsRefused) {
+  const fs::path d = scratch();
+  std::string text = "4002\n";
+  for (int k = 0; k < 4002; ++k)
+    text += "\ns" + std::to_string(k) + "\t" + (k == 4001 ? "1\t0\n" : "0\t1\na\ts" + std::to_string(k + 1) + "\tc\to\n");
+  const std::string fsm = write(d / "chain4002.fsm", text);
+  const std::string svg = (d / "chain.svg").string();
+  fs::remove(svg);
+  const auto r = run_binary(kBin, "fsm export " + fsm + " --to svg -o " + svg);
+  EXPECT_EQ(r.status, 2) << r.out;
+  EXPECT_NE(r.out.find(fsm + ": 4001 transitions, more than the 4000 that dot lays out"), std::string::npos) << r.out;
+  EXPECT_FALSE(fs::exists(svg));
+  EXPECT_EQ(run_binary(kBin, "fsm export " + fsm + " --to dot -o " + (d / "chain.dot").string()).status, 0);
+}
