@@ -30,7 +30,9 @@ struct Domain {
 
 inline constexpr std::array<Domain, 13> kScenarioDomains{{
     {"map_size", DomainStage::before_cells, true, true, 1, false, true, kMapSizeMax, "an integer in [1, 65536]"},
-    {"cell_size", DomainStage::before_cells, false, true, 0, true, false, 0, "a finite number > 0"},
+    // Bounded so that every position (map_size cells of cell_size) and every time (kStepsMax steps
+    // of step_size) is a finite double: 1e308 was accepted and ran into traces of infinities.
+    {"cell_size", DomainStage::before_cells, false, true, 0, true, true, 1e6, "a number in (0, 1e6] (metres)"},
     {"params.s_range", DomainStage::params, true, true, 1, false, true, kRangeMax, "an integer in [1, 1048576]"},
     {"params.a1", DomainStage::params, false, true, 0, true, false, 0, "a finite number > 0"},
     {"params.a2", DomainStage::params, false, true, 0, true, false, 0, "a finite number > 0"},
@@ -40,7 +42,7 @@ inline constexpr std::array<Domain, 13> kScenarioDomains{{
     {"params.eta", DomainStage::params, false, true, 0, true, false, 0, "a finite number > 0"},
     {"params.phi", DomainStage::params, false, false, 0, false, false, 0, "a finite number"},
     {"params.lambda", DomainStage::params, false, false, 0, false, false, 0, "a finite number"},
-    {"params.step_size", DomainStage::params, false, true, 0, true, false, 0, "a finite number > 0"},
+    {"params.step_size", DomainStage::params, false, true, 0, true, true, 1e6, "a number in (0, 1e6] (seconds)"},
     {"max_steps", DomainStage::after_params, true, true, 0, false, true, static_cast<double>(kStepsMax),
      "an integer in [0, 2^31 - 1]"},
 }};

@@ -84,6 +84,10 @@ TEST(RunVerb, BadInputsExitTwoWithOneMessageAndLeaveNoTrace) {
       {R"({"map_size": 4, "robots": [[0.5, 0.5]], "obstacles": [[0, 0]]})", "which is obstacles[0]"},
       {R"({"map_size": 4, "robots": [[0.5, 0.5], [0.7, 0.2]]})", "already taken by robots[0]"},
       {R"({"map_size": 4, "robots": [[0.5, 0.5]], "params": {"eta": 0}})", "params.eta: expected a finite number > 0"},
+      // positions and times that would overflow to infinity in the trace
+      {R"({"map_size": 10, "cell_size": 1e308, "robots": [[1e308, 0]]})", "cell_size: expected a number in (0, 1e6] (metres)"},
+      {R"({"map_size": 4, "robots": [[0.5, 0.5]], "mode": "abstract", "params": {"step_size": 1e308}})",
+       "params.step_size: expected a number in (0, 1e6] (seconds)"},
   };
   int k = 0;
   for (const auto& [text, expected] : cases) {
