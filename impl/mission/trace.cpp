@@ -1,6 +1,7 @@
 // Writing and reading mission traces (JSON Lines).
 #include "impl/mission/trace.hpp"
 
+#include <array>
 #include <istream>
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -60,6 +61,75 @@ void TraceWriter::on_interval(const swarmcheck::mission::IntervalRecord& i) {
   out_ << j.dump() << '\n';
 }
 
+namespace {
+
+// A record's fields, each checked, with its JSON path in the message (the library's own text
+// named neither the field nor the path).
+class Record {
+ public:
+  Record(const Json& j, std::string where) : j_(j), where_(std::move(where)) {
+    if (!j_.is_object()) throw InputError(where_, "expected a JSON object, got " + json_io::type_name(j_));
+  }
+  const Json& at(const char* key) const {
+    const auto it = j_.find(key);
+    if (it == j_.end()) throw InputError(where_ + ": " + key, "missing");
+    return *it;
+  }
+  bool has(const char* key) const { return j_.contains(key); }
+  double number(const char* key) const { return number_at(at(key), key); }
+  std::string text(const char* key) const {
+    const Json& v = at(key);
+    if (!v.is_string()) throw InputError(where_ + ": " + key, "expected a string, got " + json_io::type_name(v));
+    return v.get<std::string>();
+  }
+  std::vector<bool> flags(const char* key) const {
+    std::vector<bool> out;
+    const Json& v = array(key);
+    for (std::size_t k = 0; k < v.size(); ++k) {
+      if (!v[k].is_boolean())
+        throw InputError(where_ + ": " + key + "[" + std::to_string(k) + "]", "expected true or false, got " + json_io::type_name(v[k]));
+      out.push_back(v[k].get<bool>());
+    }
+    return out;
+  }
+  std::vector<std::string> texts(const char* key) const {
+    std::vector<std::string> out;
+    const Json& v = array(key);
+    for (std::size_t k = 0; k < v.size(); ++k) {
+      if (!v[k].is_string())
+        throw InputError(where_ + ": " + key + "[" + std::to_string(k) + "]", "expected a string, got " + json_io::type_name(v[k]));
+      out.push_back(v[k].get<std::string>());
+    }
+    return out;
+  }
+  std::vector<std::array<double, 2>> points(const char* key) const {
+    std::vector<std::array<double, 2>> out;
+    const Json& v = array(key);
+    for (std::size_t k = 0; k < v.size(); ++k) {
+      const std::string path = std::string(key) + "[" + std::to_string(k) + "]";
+      if (!v[k].is_array() || v[k].size() != 2) throw InputError(where_ + ": " + path, "expected [x, y], got " + json_io::type_name(v[k]));
+      out.push_back({number_at(v[k][0], path + "[0]"), number_at(v[k][1], path + "[1]")});
+    }
+    return out;
+  }
+  const std::string& where() const { return where_; }
+
+ private:
+  const Json& array(const char* key) const {
+    const Json& v = at(key);
+    if (!v.is_array()) throw InputError(where_ + ": " + key, "expected a list, got " + json_io::type_name(v));
+    return v;
+  }
+  double number_at(const Json& v, const std::string& path) const {
+    if (!v.is_number()) throw InputError(where_ + ": " + path, "expected a number, got " + json_io::type_name(v));
+    return v.get<double>();
+  }
+  const Json& j_;
+  std::string where_;
+};
+
+}  // namespace
+
 MissionTrace read_trace(std::istream& in, const std::string& source) {
   MissionTrace t;
   std::string line;
@@ -68,45 +138,41 @@ MissionTrace read_trace(std::istream& in, const std::string& source) {
     ++n;
     if (line.empty()) continue;
     const std::string where = source + ":" + std::to_string(n);
-    try {
-      const Json j = json_io::parse_json_text(line, source, static_cast<int64_t>(n));
-      const std::string type = j.at("type").get<std::string>();
-      if (type == "header") {
-        t.initial_state = j.at("initial_state").get<std::string>();
-        t.robots = j.at("robots").get<std::vector<std::string>>();
-      } else if (type == "event") {
-        TraceEntry e;
-        e.is_event = true;
-        e.event = EventRecord{j.at("t").get<double>(), j.at("event").get<std::string>(),
-                              j.at("robot").get<std::string>(),
-                              j.at("kind").get<std::string>() == "c",
-                              j.at("state").get<std::string>()};
-        t.entries.push_back(std::move(e));
-      } else if (type == "step") {
-        TraceEntry e;
-        e.step.time_s = j.at("t").get<double>();
-        e.step.state = j.at("state").get<std::string>();
-        for (const auto& p : j.at("positions")) e.step.positions.push_back({p.at(0).get<double>(), p.at(1).get<double>()});
-        for (const auto& b : j.at("blocked")) e.step.blocked.push_back(b.get<bool>());
-        // Traces written before the yield rule have no "yielded": no robot yielded then.
-        if (j.contains("yielded"))
-          for (const auto& b : j.at("yielded")) e.step.yielded.push_back(b.get<bool>());
-        else
-          e.step.yielded.assign(e.step.blocked.size(), false);
-        t.entries.push_back(std::move(e));
-      } else if (type == "interval") {
-        swarmcheck::mission::IntervalRecord i;
-        i.robot = j.at("robot").get<std::string>();
-        i.activity = json_io::enum_from_string<swarmcheck::mission::Activity>(
-            j.at("activity").get<std::string>(), where + ": activity");
-        i.from_s = j.at("from").get<double>();
-        i.to_s = j.at("to").get<double>();
-        t.intervals.push_back(std::move(i));
-      } else {
-        throw InputError(where, "unknown record type \"" + type + "\"");
-      }
-    } catch (const nlohmann::json::exception& e) {
-      throw InputError(where, std::string("malformed trace record: ") + e.what());
+    const Json j = json_io::parse_json_text(line, source, static_cast<int64_t>(n));
+    const Record rec(j, where);
+    const std::string type = rec.text("type");
+    if (type == "header") {
+      t.initial_state = rec.text("initial_state");
+      t.robots = rec.texts("robots");
+    } else if (type == "event") {
+      TraceEntry e;
+      e.is_event = true;
+      e.event = EventRecord{rec.number("t"), rec.text("event"), rec.text("robot"), rec.text("kind") == "c", rec.text("state")};
+      t.entries.push_back(std::move(e));
+    } else if (type == "step") {
+      TraceEntry e;
+      e.step.time_s = rec.number("t");
+      e.step.state = rec.text("state");
+      for (const auto& p : rec.points("positions")) e.step.positions.push_back({p[0], p[1]});
+      e.step.blocked = rec.flags("blocked");
+      // Traces written before the yield rule have no "yielded": no robot yielded then.
+      e.step.yielded = rec.has("yielded") ? rec.flags("yielded") : std::vector<bool>(e.step.blocked.size(), false);
+      if (e.step.positions.size() != t.robots.size() || e.step.blocked.size() != t.robots.size() ||
+          e.step.yielded.size() != t.robots.size())
+        throw InputError(where, "a step record has " + std::to_string(e.step.positions.size()) + " positions, " +
+                                    std::to_string(e.step.blocked.size()) + " blocked and " +
+                                    std::to_string(e.step.yielded.size()) + " yielded flags; the header names " +
+                                    std::to_string(t.robots.size()) + " robots");
+      t.entries.push_back(std::move(e));
+    } else if (type == "interval") {
+      swarmcheck::mission::IntervalRecord i;
+      i.robot = rec.text("robot");
+      i.activity = json_io::enum_from_string<swarmcheck::mission::Activity>(rec.text("activity"), where + ": activity");
+      i.from_s = rec.number("from");
+      i.to_s = rec.number("to");
+      t.intervals.push_back(std::move(i));
+    } else {
+      throw InputError(where, "unknown record type \"" + type + "\"");
     }
   }
   return t;

@@ -151,3 +151,26 @@ TEST(MissionRun, TimeLimitIsReported) {
 }
 
 }  // namespace
+
+TEST(MissionRun, AMalformedTraceRecordIsRefusedWithItsLineAndJsonPath) {
+  const std::string header =
+      R"({"type":"header","format":"swarmcheck-mission-trace","version":1,"mission":"m.json","fsm":"c.fsm","initial_state":"s1","robots":["A","B"],"body":"unicycle","dt":0.05})";
+  const std::string step = R"({"type":"step","t":0.0,"state":"s1","positions":[[0,0],[1,1]],"blocked":[false,false],"yielded":[false,false]})";
+  const auto error_of = [&](const std::string& second) {
+    std::istringstream in(header + "\n" + second + "\n");
+    try {
+      swarmcheck::impl::mission::read_trace(in, "t.jsonl");
+    } catch (const swarmcheck::InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("(no error)");
+  };
+  EXPECT_EQ(error_of(step), "(no error)");
+  EXPECT_EQ(error_of(R"({"type":"step","t":0.0,"state":"s1","positions":[["x",0],[1,1]],"blocked":[false,false]})"),
+            "t.jsonl:2: positions[0][0]: expected a number, got a string");
+  EXPECT_EQ(error_of(R"({"t":0.0})"), "t.jsonl:2: type: missing");
+  EXPECT_EQ(error_of(R"({"type":"step","t":"0","state":"s1","positions":[],"blocked":[]})"), "t.jsonl:2: t: expected a number, got a string");
+  EXPECT_EQ(error_of(R"({"type":"step","t":0.0,"state":"s1","positions":[[0,0]],"blocked":[false]})"),
+            "t.jsonl:2: a step record has 1 positions, 1 blocked and 1 yielded flags; the header names 2 robots");
+  EXPECT_EQ(error_of("[1, 2]"), "t.jsonl:2: expected a JSON object, got a list");
+}
