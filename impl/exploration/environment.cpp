@@ -163,7 +163,7 @@ void Environment::deposit(const spec::EnvironmentState& env, LazyGrid& grid) con
 bool Environment::deposit_parallel(const spec::EnvironmentState& env, LazyGrid& grid, int32_t strips) const {
   const int32_t reach = 2 * cfg_.scenario.params.s_range;
   const auto deposit = [&](int32_t r, char&) {
-    spec::deposit_around(cfg_, grid, env.deposit_centre[static_cast<std::size_t>(r)], env.tick);
+    grid.deposit_window(cfg_, env.deposit_centre[static_cast<std::size_t>(r)], env.tick);
     return int64_t{0};
   };
   const auto ahead = [&](int32_t r) { prefetch(env.deposit_centre[static_cast<std::size_t>(r)]); };
@@ -183,7 +183,7 @@ void Environment::deposit_sequential(const spec::EnvironmentState& env, LazyGrid
   for (std::size_t r = 0; r < std::min(n, kPrefetchAhead); ++r) prefetch(env.deposit_centre[r]);
   for (std::size_t r = 0; r < n; ++r) {
     if (r + kPrefetchAhead < n) prefetch(env.deposit_centre[r + kPrefetchAhead]);
-    spec::deposit_around(cfg_, grid, env.deposit_centre[r], env.tick);
+    grid.deposit_window(cfg_, env.deposit_centre[r], env.tick);
   }
 }
 

@@ -33,6 +33,13 @@ class DepositKernel {
     if (table_.empty()) return deposit_amount(params_, di, dj);
     return table_[static_cast<std::size_t>((di + radius_) * side_ + (dj + radius_))];
   }
+  // The tabled amounts of the row of offset di, by dj + radius(): row(di)[dj + radius()] is
+  // amount(di, dj). nullptr when the window is not tabled (amount() computes each then).
+  const double* row(int32_t di) const {
+    if (table_.empty()) return nullptr;
+    return &table_[static_cast<std::size_t>((di + radius_) * side_)];
+  }
+  int32_t radius() const { return radius_; }
 
  private:
   static constexpr int64_t kTableCellsMax = int64_t{1} << 16;
