@@ -52,6 +52,20 @@ class LazyGrid {
 
   swarmcheck::exploration::Cell cell(CellIndex c, int64_t tick) const;
 
+  // spec::gather_candidates's list (the window of c without c, raster order, pheromone at tick),
+  // row by row: the index worked out once a row instead of once a cell.
+  template <class Alloc>
+  void gather_window(const swarmcheck::exploration::EnvironmentConfig& cfg, CellIndex c, int64_t tick,
+                     std::vector<Candidate, Alloc>& out) const {
+    out.clear();
+    const swarmcheck::exploration::Window w = swarmcheck::exploration::window_around(c, cfg.scenario.params.s_range, n_);
+    for (int32_t i = w.i_lo; i <= w.i_hi; ++i) {
+      const CellData* cell = &cells_[index(CellIndex{i, w.j_lo})];
+      for (int32_t j = w.j_lo; j <= w.j_hi; ++j, ++cell)
+        if (i != c[0] || j != c[1]) out.push_back(Candidate{CellIndex{i, j}, current_of(*cell, tick), blocked_of(*cell)});
+    }
+  }
+
   // spec::deposit_around(cfg, *this, centre, tick), row by row: the same cells, each given
   // deposit(c, tick, kernel amount) once with the same bits (a window's cells are distinct, so
   // the order among them cannot matter), with the index and the kernel's row worked out once a
@@ -114,7 +128,8 @@ class LazyGrid {
   }
   bool obstacle(std::size_t k) const { return cells_[k].occupancy & kObstacleBit; }
   // An obstacle or a robot: any bit but `visited`.
-  bool blocked(std::size_t k) const { return (cells_[k].occupancy & ~kVisitedBit) != 0; }
+  bool blocked(std::size_t k) const { return blocked_of(cells_[k]); }
+  static bool blocked_of(const CellData& c) { return (c.occupancy & ~kVisitedBit) != 0; }
   void set_occupant(std::size_t k, int32_t r) {
     cells_[k].occupancy = (cells_[k].occupancy & ~kRobotMask) | static_cast<uint32_t>(r + 1);
   }

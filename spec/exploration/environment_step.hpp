@@ -88,11 +88,21 @@ struct EnvironmentState {
   Progress progress;
 };
 
+// A grid that gathers a window itself (impl's LazyGrid, row by row) must give exactly the list
+// below; the conformance harness holds it to that.
+template <class G, class Alloc>
+concept GathersWindows = requires(const G& g, const EnvironmentConfig& cfg, CellIndex c, int64_t tick,
+                                  std::vector<Candidate, Alloc>& out) { g.gather_window(cfg, c, tick, out); };
+
 // The candidates of a robot in c: its window without c, raster order, pheromone at tick. (Any
 // allocator: impl's per-thread buffers keep to their own cache lines.)
 template <EnvironmentGrid G, class Alloc>
 void gather_candidates(const EnvironmentConfig& cfg, const G& grid, CellIndex c, int64_t tick,
                        std::vector<Candidate, Alloc>& out) {
+  if constexpr (GathersWindows<G, Alloc>) {
+    grid.gather_window(cfg, c, tick, out);
+    return;
+  }
   out.clear();
   const Window w = window_around(c, cfg.scenario.params.s_range, cfg.scenario.map_size);
   for (int32_t i = w.i_lo; i <= w.i_hi; ++i)
