@@ -44,7 +44,12 @@ std::string output_target(const std::string& path) {
   std::error_code ec;
   std::string target = path;
   if (fs::is_symlink(fs::symlink_status(path, ec))) {
-    const fs::path resolved = fs::weakly_canonical(path, ec);
+    // Resolved from the link's own target: weakly_canonical(path) of a link to a file not made
+    // yet would stop at the link itself, and the rename would replace the link.
+    fs::path pointed = fs::read_symlink(path, ec);
+    if (ec) throw InputError(path, "is a symbolic link that cannot be read: " + ec.message());
+    if (pointed.is_relative()) pointed = fs::path(path).parent_path() / pointed;
+    const fs::path resolved = fs::weakly_canonical(pointed, ec);
     if (ec) throw InputError(path, "is a symbolic link that cannot be followed: " + ec.message());
     target = resolved.string();
   }

@@ -128,6 +128,14 @@ TEST(Limits, AFifoOrADeviceAsOutputIsRefusedAndASymlinkIsWrittenThrough) {
   EXPECT_EQ(run_binary(kBin, "run --steps 2 --trace " + link.string()).status, 1);   // max_steps: not completed
   EXPECT_TRUE(fs::is_symlink(link));
   EXPECT_EQ(read(target).rfind("{\"format\":\"swarmcheck-trace\"", 0), 0U);
+  // A link to a file not made yet: the file is made where it points, the link stays.
+  const fs::path dangling = d / "dangling.jsonl";
+  fs::remove(dangling);
+  fs::remove(d / "made.jsonl");
+  fs::create_symlink("made.jsonl", dangling);
+  EXPECT_EQ(run_binary(kBin, "run --steps 2 --trace " + dangling.string()).status, 1);
+  EXPECT_TRUE(fs::is_symlink(dangling));
+  EXPECT_EQ(read(d / "made.jsonl").rfind("{\"format\":\"swarmcheck-trace\"", 0), 0U);
   EXPECT_TRUE(temp_files(d).empty());
 }
 
