@@ -69,6 +69,12 @@ TraceHeader read_header(const Json& h, const std::string& where) {
     throw InputError(where, "expected a swarmcheck trace header ({\"format\": \"swarmcheck-trace\", ...})");
   if (typed_member<std::string>(h, "system", "", where, "\"exploration\"") != "exploration")
     throw InputError(where, "expected an exploration trace (\"system\": \"exploration\")");
+  // A trace of another version would be read as if it were this one (absent: written before
+  // the version was recorded, which is this one).
+  if (const int64_t v = typed_member<int64_t>(h, "format_version", kTraceFormatVersion, where, "an integer");
+      v != kTraceFormatVersion)
+    throw InputError(where, "header: format_version: this swarmcheck reads version " +
+                                std::to_string(kTraceFormatVersion) + ", got " + std::to_string(v));
   if (!h.contains("scenario")) throw InputError(where, "the header has no \"scenario\"");
   TraceHeader t;
   try {

@@ -232,3 +232,21 @@ TEST(Hardening, AnSvgExportOfMoreTransitionsThanDotLaysOutInReasonableTimeIsRefu
   EXPECT_FALSE(fs::exists(svg));
   EXPECT_EQ(run_binary(kBin, "fsm export " + fsm + " --to dot -o " + (d / "chain.dot").string()).status, 0);
 }
+
+TEST(Hardening, ATraceOfAnotherFormatVersionIsRefusedNotReadAsThisOne) {
+  const fs::path d = scratch();
+  const std::string trace = (d / "v.jsonl").string();
+  ASSERT_EQ(run_binary(kBin, "run --steps 2 --trace " + trace).status, 1);
+  std::string text = read(trace);
+  const std::string v1 = "\"format_version\":1,";
+  ASSERT_NE(text.find(v1), std::string::npos);
+  for (const std::string& v : {std::string("\"format_version\":99,"), std::string("\"format_version\":\"1\",")}) {
+    std::string other = text;
+    other.replace(other.find(v1), v1.size(), v);
+    const std::string path = write(d / "other.jsonl", other);
+    const auto r = run_binary(kBin, "replay " + path);
+    EXPECT_EQ(r.status, 2) << v << ": " << r.out;
+    EXPECT_NE(r.out.find(path + ":1: header: format_version: "), std::string::npos) << r.out;
+  }
+  EXPECT_EQ(run_binary(kBin, "replay " + trace).status, 0);
+}
