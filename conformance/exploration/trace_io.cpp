@@ -9,6 +9,7 @@
 #include "model/exploration/exploration_model.hpp"
 #include "spec/exploration/scenario.hpp"
 #include "spec/exploration/trace.hpp"
+#include "spec/exploration/trace_field.hpp"
 #include "spec/util/hana_diff.hpp"
 #include "spec/util/input_error.hpp"
 #include "spec/util/input_file.hpp"
@@ -70,11 +71,11 @@ TraceHeader read_header(const Json& h, const std::string& where) {
   if (typed_member<std::string>(h, "system", "", where, "\"exploration\"") != "exploration")
     throw InputError(where, "expected an exploration trace (\"system\": \"exploration\")");
   // A trace of another version would be read as if it were this one (absent: written before
-  // the version was recorded, which is this one).
+  // the version was recorded, which is 1). Version 2 adds field records, which replay skips.
   if (const int64_t v = typed_member<int64_t>(h, "format_version", kTraceFormatVersion, where, "an integer");
-      v != kTraceFormatVersion)
-    throw InputError(where, "header: format_version: this swarmcheck reads version " +
-                                std::to_string(kTraceFormatVersion) + ", got " + std::to_string(v));
+      v != kTraceFormatVersion && v != kTraceFieldFormatVersion)
+    throw InputError(where, "header: format_version: this swarmcheck reads versions " + std::to_string(kTraceFormatVersion) +
+                                " and " + std::to_string(kTraceFieldFormatVersion) + ", got " + std::to_string(v));
   if (!h.contains("scenario")) throw InputError(where, "the header has no \"scenario\"");
   TraceHeader t;
   try {

@@ -69,9 +69,14 @@ void read_header(const Line& l, HandshakeTrace& t) {
   if (t.master != "jacobi" && t.master != "gauss-seidel")
     throw InputError(l.where(), "\"master\" must be \"jacobi\" or \"gauss-seidel\"");
   t.controller = j.contains("controller") ? l.string(j, "controller") : "spec";
+  if (t.controller != "spec" && t.controller != "late")
+    throw InputError(l.where(), "\"controller\" must be \"spec\" or \"late\"");
   t.tolerance_m = l.number_or(j, "tolerance", t.tolerance_m);
   t.orient_tolerance_rad = l.number_or(j, "orient_tolerance", t.orient_tolerance_rad);
   t.reorient_rad = l.number_or(j, "reorient", t.reorient_rad);
+  for (const auto& [key, value] : {std::pair{"tolerance", t.tolerance_m}, std::pair{"orient_tolerance", t.orient_tolerance_rad},
+                                   std::pair{"reorient", t.reorient_rad}})
+    if (!(value >= 0)) throw InputError(l.where(), fmt::format("\"{}\" must be a number >= 0", key));
 }
 
 TraceStep read_step(const Line& l, const HandshakeTrace& t, int64_t expected_step) {
@@ -136,6 +141,7 @@ HandshakeTrace read_handshake_trace(const std::string& path) {
     }
   }
   if (!header) throw InputError(fmt::format("{}:{}", path, number + 1), "expected the trace header line");
+  if (t.steps.empty()) throw InputError(fmt::format("{}:{}", path, number + 1), "no step records after the header: nothing to show");
   return t;
 }
 

@@ -250,3 +250,32 @@ TEST(Hardening, ATraceOfAnotherFormatVersionIsRefusedNotReadAsThisOne) {
   }
   EXPECT_EQ(run_binary(kBin, "replay " + trace).status, 0);
 }
+
+TEST(Hardening, AHandshakeTraceWithNoStepsOrImpossibleSettingsIsRefused) {
+  const fs::path d = scratch() / "handshake";
+  fs::remove_all(d);
+  ASSERT_EQ(run_binary(kBin, "prove --only handshake-gauss-seidel --trace-dir " + d.string()).status, 0);
+  const std::string trace = (d / "handshake-gauss-seidel.jsonl").string();
+  const std::string text = read(trace);
+  const std::string header = text.substr(0, text.find('\n') + 1);
+  const auto refused = [&](const std::string& name, const std::string& content, const std::string& message) {
+    const std::string path = write(d / name, content);
+    for (const char* verb : {"replay ", "view "}) {
+      const auto r = run_binary(kBin, verb + path + (std::string(verb) == "view " ? " -o " + (d / "v.html").string() : ""));
+      EXPECT_EQ(r.status, 2) << verb << name << ": " << r.out;
+      EXPECT_NE(r.out.find(message), std::string::npos) << verb << name << ": " << r.out;
+    }
+  };
+  refused("header-only.jsonl", header, "no step records after the header");
+  std::string negative = text;
+  const std::size_t t = negative.find("\"tolerance\":");
+  ASSERT_NE(t, std::string::npos);
+  negative.insert(t + 12, "-");
+  refused("negative.jsonl", negative, "\"tolerance\" must be a number >= 0");
+  std::string unknown = text;
+  const std::size_t c = unknown.find("\"controller\":\"spec\"");
+  ASSERT_NE(c, std::string::npos);
+  unknown.replace(c, 19, "\"controller\":\"zz\"");
+  refused("controller.jsonl", unknown, "\"controller\" must be \"spec\" or \"late\"");
+  EXPECT_FALSE(fs::exists(d / "v.html"));
+}
