@@ -29,6 +29,11 @@ inline std::string text_position(const std::string& text, std::size_t byte, cons
 
 // Nesting past kMaxJsonDepth and repeated keys are InputErrors too (json_structure.hpp).
 inline Json parse_json_text(const std::string& text, const std::string& file, int64_t first_line = 1) {
+  // nlohmann stops at a NUL as at the end of the text ("unexpected end of input" at 1:1 for a file
+  // that starts with one): name the byte instead.
+  if (const std::size_t nul = text.find('\0'); nul != std::string::npos)
+    throw InputError(text_position(text, nul + 1, file, first_line),
+                     "not valid JSON: a NUL byte (a binary file?)");
   const JsonStructureFinding structure = scan_json_structure(text);
   if (structure.too_deep_at != 0)
     throw InputError(text_position(text, structure.too_deep_at, file, first_line),

@@ -279,3 +279,15 @@ TEST(Hardening, AHandshakeTraceWithNoStepsOrImpossibleSettingsIsRefused) {
   refused("controller.jsonl", unknown, "\"controller\" must be \"spec\" or \"late\"");
   EXPECT_FALSE(fs::exists(d / "v.html"));
 }
+
+TEST(Hardening, ANulByteInAJsonInputIsNamedWhereItIs) {
+  const fs::path d = scratch();
+  const std::string starts = write(d / "nul0.json", std::string("\0{}", 3));
+  const auto r = run_binary(kBin, "run " + starts);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_EQ(r.out, "swarmcheck: error: " + starts + ":1:1: not valid JSON: a NUL byte (a binary file?)\n");
+  const std::string inside = write(d / "nul1.json", std::string("{\"map_size\": 4,\n \"robots\"\0", 28));
+  const auto r2 = run_binary(kBin, "run " + inside);
+  EXPECT_EQ(r2.status, 2);
+  EXPECT_EQ(r2.out, "swarmcheck: error: " + inside + ":2:10: not valid JSON: a NUL byte (a binary file?)\n");
+}
