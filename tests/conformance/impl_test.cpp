@@ -36,3 +36,22 @@ TEST(Impl, InvalidScenarioIsRefusedWithAnInputError) {
   s.robots.push_back({0.7, 0.2});   // the same cell as robot 0
   EXPECT_THROW(Exploration x(s), InputError);
 }
+
+// A window too big for the deposit kernel's table (more than 2^16 cells: s_range 130) takes the
+// row-by-row deposit's fallback path, which no generated case reaches (maps of at most 64).
+TEST(Impl, AWindowTooBigToTableDepositsAsTheModelDoes) {
+  Scenario s = default_scenario();
+  s.map_size = 300;
+  s.mode = Mode::abstract;
+  s.rule = RuleSet::stochastic;
+  s.obstacles.clear();
+  s.robots = {{10.5, 10.5}, {150.5, 150.5}, {290.5, 20.5}};
+  s.params.s_range = 130;
+  swarmcheck::model::exploration::ExplorationModel m(s);
+  Exploration x(s);
+  for (int k = 0; k < 3; ++k) {
+    m.step();
+    x.step();
+    ASSERT_EQ(first_difference_text(m.record(), x.record()), "") << "step " << k + 1;
+  }
+}
