@@ -27,6 +27,9 @@ Page view_page(const std::string& path, const ViewOptions& o);
 Page exploration_page(const std::string& text, const std::string& path, const ViewOptions& o);
 Page handshake_page(const std::string& text, const std::string& path);
 Page mission_page(const std::string& text, const std::string& path, const ViewOptions& o);
+// The mission file a mission trace is shown with: --mission, else the one its header names (as
+// written, or beside the trace).
+std::string mission_file_of_trace(const std::string& text, const std::string& path, const ViewOptions& o);
 Page fsm_page(const std::string& text, const std::string& path);
 
 // The colours of the heat map, obstacles and robots (views/svg.hpp), for the pages.

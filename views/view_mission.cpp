@@ -17,15 +17,19 @@ using json_io::Json;
 
 Json point(const sm::Point& p) { return Json::array({p[0], p[1]}); }
 
-sm::Mission load_named_mission(const Json& header, const std::string& path, const ViewOptions& o) {
-  if (!o.mission_path.empty()) return swarmcheck::mission::load_mission(o.mission_path);
+std::string named_mission_file(const Json& header, const std::string& path, const ViewOptions& o) {
+  if (!o.mission_path.empty()) return o.mission_path;
   const std::string named = json_io::string_member(header, "mission");
   if (named.empty()) throw InputError(path + ":1", "the header names no mission file; give it with --mission FILE");
-  if (std::filesystem::exists(named)) return swarmcheck::mission::load_mission(named);
+  if (std::filesystem::exists(named)) return named;
   const auto beside = std::filesystem::path(path).parent_path() / std::filesystem::path(named).filename();
-  if (std::filesystem::exists(beside)) return swarmcheck::mission::load_mission(beside.string());
+  if (std::filesystem::exists(beside)) return beside.string();
   throw InputError(path + ":1", "the mission file \"" + named +
                                     "\" named in the header cannot be found; give it with --mission FILE");
+}
+
+sm::Mission load_named_mission(const Json& header, const std::string& path, const ViewOptions& o) {
+  return swarmcheck::mission::load_mission(named_mission_file(header, path, o));
 }
 
 Json mission_json(const sm::Mission& m) {
@@ -43,6 +47,10 @@ Json mission_json(const sm::Mission& m) {
 }
 
 }  // namespace
+
+std::string mission_file_of_trace(const std::string& text, const std::string& path, const ViewOptions& o) {
+  return named_mission_file(json_lines(text.substr(0, text.find('\n')), path).front().json, path, o);
+}
 
 Page mission_page(const std::string& text, const std::string& path, const ViewOptions& o) {
   if (o.max_records < 2) throw InputError("--max-records", "expected an integer >= 2");

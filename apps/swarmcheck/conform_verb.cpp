@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <fstream>
 #include <memory>
+#include <optional>
 
 #include "apps/swarmcheck/conform_systems.hpp"
 #include "apps/swarmcheck/mpi_pool.hpp"
@@ -197,26 +198,36 @@ int conform_exploration(ConformArgs a, const mpi::Launch& launch, Json* json_out
 }
 
 // --out, checked before the campaign (a counterexample may come after an hour of cases): an
-// existing folder that a file can be made in, or a folder that can be made (made and removed
-// again here: nothing is left behind when every case agrees).
-void check_counterexample_folder(const std::string& dir) {
+// existing folder, or one that can be made. Alone, the check writes: a file is made in the folder
+// and removed, or the folder is made and removed (nothing is left behind when every case
+// agrees). Under mpirun every rank checks the same way, reading only (ranks on one machine would
+// race on the probe), so that all of them stop together or none does.
+std::optional<InputError> counterexample_folder_problem(const std::string& dir, bool probe) {
   namespace fs = std::filesystem;
   std::error_code ec;
   const fs::path d(dir);
   if (fs::exists(d, ec)) {
-    if (!fs::is_directory(d, ec)) throw InputError(dir, "is not a folder (--out names the folder for counterexample traces)");
-    const fs::path probe = d / (".swarmcheck-probe-" + std::to_string(::getpid()));
-    const int fd = ::open(probe.c_str(), O_WRONLY | O_CREAT | O_EXCL, 0600);
-    if (fd < 0) throw InputError(dir, "cannot write counterexample traces in this folder: " + std::string(std::strerror(errno)));
+    if (!fs::is_directory(d, ec)) return InputError(dir, "is not a folder (--out names the folder for counterexample traces)");
+    if (!probe) return std::nullopt;
+    const fs::path file = d / (".swarmcheck-probe-" + std::to_string(::getpid()));
+    const int fd = ::open(file.c_str(), O_WRONLY | O_CREAT | O_EXCL, 0600);
+    if (fd < 0) return InputError(dir, "cannot write counterexample traces in this folder: " + std::string(std::strerror(errno)));
     ::close(fd);
-    fs::remove(probe, ec);
-    return;
+    fs::remove(file, ec);
+    return std::nullopt;
   }
   fs::path first_made = d;   // the outermost folder that does not exist yet
   for (fs::path p = d.parent_path(); !p.empty() && !fs::exists(p, ec); p = p.parent_path()) first_made = p;
+  if (!probe) {
+    const fs::path parent = first_made.parent_path().empty() ? fs::path(".") : first_made.parent_path();
+    if (!fs::is_directory(parent, ec) || ::access(parent.c_str(), W_OK) != 0)
+      return InputError(dir, "cannot make the folder for counterexample traces in " + parent.string());
+    return std::nullopt;
+  }
   if (!fs::create_directories(d, ec) || ec)
-    throw InputError(dir, "cannot make the folder for counterexample traces: " + (ec ? ec.message() : std::string("unknown error")));
+    return InputError(dir, "cannot make the folder for counterexample traces: " + (ec ? ec.message() : std::string("unknown error")));
   fs::remove_all(first_made, ec);   // made only to know it can be; made again if a counterexample comes
+  return std::nullopt;
 }
 
 // Every system asked for, each with its own campaign from the one seed; under mpirun only the
@@ -226,7 +237,10 @@ int conform(const ConformArgs& a) {
   const std::vector<std::string> systems =
       a.system == "all" ? std::vector<std::string>{"exploration", "automata", "missions"} : std::vector<std::string>{a.system};
   const mpi::Launch launch = mpi::launch_from_environment();
-  if (launch.rank == 0) check_counterexample_folder(a.options.out_dir);
+  if (const auto problem = counterexample_folder_problem(a.options.out_dir, launch.size <= 1)) {
+    if (launch.rank == 0) throw *problem;
+    return 2;   // rank 0 reports it
+  }
   const bool several = systems.size() > 1;
   Json combined = Json::object();
   int status = 0;

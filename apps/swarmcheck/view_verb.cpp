@@ -47,11 +47,12 @@ int view_dse_folder(const ViewCliOptions& o) {
 
 int run_view(const ViewCliOptions& o) {
   impl::io::refuse_output_that_is_an_input(o.out, {o.file, o.view.mission_path});
-  if (!o.view.mission_path.empty())   // and the .fsm the mission names
-    impl::io::refuse_output_that_is_an_input(o.out, swarmcheck::mission::mission_input_files(o.view.mission_path));
   if (std::filesystem::is_directory(o.file)) return view_dse_folder(o);
   const std::string text = views::read_text_file(o.file, "file to view");
   const views::ViewKind kind = views::detect_view_kind(text, o.file);
+  if (kind == views::ViewKind::mission)   // the mission it is shown with, and that mission's .fsm
+    impl::io::refuse_output_that_is_an_input(
+        o.out, swarmcheck::mission::mission_input_files(views::mission_file_of_trace(text, o.file, o.view)));
   views::Page page;
   if (kind == views::ViewKind::handshake) {
     proofs::handshake::read_handshake_trace(o.file);   // checks every line (proofs/' reader)

@@ -11,6 +11,7 @@
 #include <fstream>
 #include <memory>
 
+#include "spec/util/budget.hpp"
 #include "spec/util/input_error.hpp"
 
 namespace swarmcheck::fmi::master {
@@ -42,13 +43,11 @@ std::string file_uri(const std::string& path) {
   return out + "/";
 }
 
-// An FMU's files take a few MB (this tool's) to some hundreds (resources of others'); more than
-// this is refused as the archive is read (a 5 MB zip of zeros unpacked to 5 GiB in /tmp before).
-constexpr std::uint64_t kMaxUnpackedBytes = std::uint64_t{1} << 30;
-
 // Unpacks every entry of the archive under dir; refuses entries that would land outside it, and
-// archives that unpack to more than kMaxUnpackedBytes.
-void unpack(const std::string& fmu, const std::string& dir) {
+// archives that unpack to more than max_bytes: by the sizes the archive declares, before anything
+// is written, and by the bytes actually read (a header may lie). (A 5 MB zip of zeros unpacked to
+// 5 GiB in /tmp before.)
+void unpack(const std::string& fmu, const std::string& dir, std::uint64_t max_bytes) {
   std::uint64_t unpacked = 0;
   int error = 0;
   zip_t* archive = zip_open(fmu.c_str(), ZIP_RDONLY, &error);
@@ -61,6 +60,14 @@ void unpack(const std::string& fmu, const std::string& dir) {
   }
   const auto close = std::unique_ptr<zip_t, int (*)(zip_t*)>(archive, zip_close);
   const zip_int64_t n = zip_get_num_entries(archive, 0);
+  const std::string too_big = "unpacks to more than " + format_bytes(static_cast<double>(max_bytes)) + ": refused as a zip bomb";
+  std::uint64_t declared = 0;
+  for (zip_int64_t k = 0; k < n; ++k) {
+    zip_stat_t st;
+    zip_stat_init(&st);
+    if (zip_stat_index(archive, static_cast<zip_uint64_t>(k), 0, &st) == 0 && (st.valid & ZIP_STAT_SIZE)) declared += st.size;
+    if (declared > max_bytes) throw InputError(fmu, too_big + " (by the sizes it declares)");
+  }
   for (zip_int64_t k = 0; k < n; ++k) {
     const char* raw = zip_get_name(archive, static_cast<zip_uint64_t>(k), 0);
     if (!raw) throw InputError(fmu, "an archive entry has no name");
@@ -82,8 +89,7 @@ void unpack(const std::string& fmu, const std::string& dir) {
     zip_int64_t got = 0;
     while ((got = zip_fread(in, buffer, sizeof buffer)) > 0) {
       unpacked += static_cast<std::uint64_t>(got);
-      if (unpacked > kMaxUnpackedBytes)
-        throw InputError(fmu, "unpacks to more than 1 GiB (at archive entry '" + name + "'): refused as a zip bomb");
+      if (unpacked > max_bytes) throw InputError(fmu, too_big + " (at archive entry '" + name + "')");
       out.write(buffer, got);
     }
     if (got < 0 || !out) throw InputError(fmu, "cannot unpack archive entry '" + name + "'");
@@ -169,14 +175,14 @@ ModelDescription read_model_description(const std::string& xml, const std::strin
   return md;
 }
 
-FmuLibrary::FmuLibrary(const std::string& fmu_path) : path_(fmu_path) {
+FmuLibrary::FmuLibrary(const std::string& fmu_path, std::uint64_t max_unpacked_bytes) : path_(fmu_path) {
   if (!std::filesystem::is_regular_file(fmu_path)) throw InputError(fmu_path, "no such FMU file");
   const char* tmp = std::getenv("TMPDIR");
   std::string pattern = std::string(tmp && *tmp ? tmp : "/tmp") + "/swarmcheck-fmu-XXXXXX";
   if (!mkdtemp(pattern.data())) throw InputError(pattern, "cannot create a temporary folder to unpack the FMU");
   dir_ = pattern;
   try {
-    unpack(fmu_path, dir_);
+    unpack(fmu_path, dir_, max_unpacked_bytes);
     std::ifstream in(dir_ + "/modelDescription.xml", std::ios::binary);
     if (!in) throw InputError(fmu_path, "the archive has no modelDescription.xml");
     const std::string xml((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());

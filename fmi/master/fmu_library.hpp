@@ -61,7 +61,10 @@ struct Fmi2Functions {
 
 class FmuLibrary {
  public:
-  explicit FmuLibrary(const std::string& fmu_path);
+  // An FMU's files take a few MB (this tool's) to some hundreds (resources of others'); an
+  // archive that would unpack to more than `max_unpacked_bytes` is refused.
+  static constexpr std::uint64_t kMaxUnpackedBytes = std::uint64_t{1} << 30;
+  explicit FmuLibrary(const std::string& fmu_path, std::uint64_t max_unpacked_bytes = kMaxUnpackedBytes);
   ~FmuLibrary();
   FmuLibrary(const FmuLibrary&) = delete;
   FmuLibrary& operator=(const FmuLibrary&) = delete;

@@ -59,7 +59,16 @@ class Parser {
   // One line, the constraint quoted after the column (the CLI prints a message as one line, with
   // control bytes escaped: a caret drawn under it on a line of its own came out as \x0A).
   [[noreturn]] void fail(std::size_t column, const std::string& what) const {
-    throw InputError(where_ + ", column " + std::to_string(column), what + " in \"" + text_ + "\"");
+    throw InputError(where_ + ", column " + std::to_string(column), what + " in \"" + excerpt(column) + "\"");
+  }
+  // The constraint, or up to 30 characters either side of the column in a long one.
+  std::string excerpt(std::size_t column) const {
+    constexpr std::size_t kSide = 30;
+    if (text_.size() <= 2 * kSide + 10) return text_;
+    const std::size_t at = std::min(column - 1, text_.size());
+    const std::size_t from = at > kSide ? at - kSide : 0;
+    const std::size_t to = std::min(text_.size(), at + kSide);
+    return (from > 0 ? "..." : "") + text_.substr(from, to - from) + (to < text_.size() ? "..." : "");
   }
 
   static std::string spelling(const Token& t) {
@@ -275,6 +284,7 @@ class Parser {
 
   int32_t parse_call(const Token& fn) {
     using Op = Expression::Op;
+    const Deeper deeper(*this);   // abs(abs(...)) recurses without passing through parse_or
     ++pos_;   // '('
     std::vector<int32_t> args;
     while (true) {

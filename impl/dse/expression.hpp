@@ -45,7 +45,7 @@ using NameValues = std::function<Value(const std::string& name)>;
 class Expression {
  public:
   // `where` prefixes every error, e.g. "dse.json: parameterConstraints[0]"; the error's place is
-  // "<where>, column N" and its message quotes the text with a caret under column N.
+  // "<where>, column N" and its message quotes the text (around column N, when it is long).
   static Expression parse(const std::string& text, const NameTypes& types, const std::string& where,
                           const std::string& known_names);
 

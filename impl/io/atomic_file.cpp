@@ -44,12 +44,16 @@ std::string output_target(const std::string& path) {
   std::error_code ec;
   std::string target = path;
   if (fs::is_symlink(fs::symlink_status(path, ec))) {
-    // Resolved from the link's own target: weakly_canonical(path) of a link to a file not made
-    // yet would stop at the link itself, and the rename would replace the link.
-    fs::path pointed = fs::read_symlink(path, ec);
-    if (ec) throw InputError(path, "is a symbolic link that cannot be read: " + ec.message());
-    if (pointed.is_relative()) pointed = fs::path(path).parent_path() / pointed;
-    const fs::path resolved = fs::weakly_canonical(pointed, ec);
+    // Followed link by link: weakly_canonical of a link to a file not made yet stops at the link
+    // itself, and the rename would replace the link.
+    fs::path link = path;
+    for (int hops = 0; fs::is_symlink(fs::symlink_status(link, ec)); ++hops) {
+      if (hops == 40) throw InputError(path, "is a symbolic link that cannot be followed: too many levels of links");
+      fs::path pointed = fs::read_symlink(link, ec);
+      if (ec) throw InputError(path, "is a symbolic link that cannot be read: " + ec.message());
+      link = pointed.is_relative() ? link.parent_path() / pointed : pointed;
+    }
+    const fs::path resolved = fs::weakly_canonical(link, ec);
     if (ec) throw InputError(path, "is a symbolic link that cannot be followed: " + ec.message());
     target = resolved.string();
   }
@@ -115,8 +119,17 @@ void refuse_output_that_is_an_input(const std::string& output, const std::vector
 void refuse_output_that_is_another_output(const std::string& output, const std::string& flag,
                                           const std::string& other, const std::string& other_flag) {
   if (output.empty() || other.empty()) return;
+  // Outputs usually do not exist yet (equivalent() is false then): compared as the files they
+  // will be written to, links followed.
   std::error_code ec;
-  if (output == other || std::filesystem::equivalent(output, other, ec))
+  const auto where = [&](const std::string& p) {
+    try {
+      return fs::weakly_canonical(fs::absolute(output_target(p)), ec).string();
+    } catch (const InputError&) {
+      return p;   // refused when it is opened, with its own message
+    }
+  };
+  if (output == other || std::filesystem::equivalent(output, other, ec) || where(output) == where(other))
     throw InputError(output, "is also the " + other_flag + " output of this command: give " + flag + " another file");
 }
 

@@ -107,7 +107,9 @@ class Record {
     const Json& v = array(key);
     for (std::size_t k = 0; k < v.size(); ++k) {
       const std::string path = std::string(key) + "[" + std::to_string(k) + "]";
-      if (!v[k].is_array() || v[k].size() != 2) throw InputError(where_ + ": " + path, "expected [x, y], got " + json_io::type_name(v[k]));
+      if (!v[k].is_array() || v[k].size() != 2)
+        throw InputError(where_ + ": " + path, "expected [x, y], got " + (v[k].is_array() ? "a list of " + std::to_string(v[k].size())
+                                                                                        : json_io::type_name(v[k])));
       out.push_back({number_at(v[k][0], path + "[0]"), number_at(v[k][1], path + "[1]")});
     }
     return out;
@@ -147,9 +149,12 @@ MissionTrace read_trace(std::istream& in, const std::string& source) {
     } else if (type == "event") {
       TraceEntry e;
       e.is_event = true;
-      e.event = EventRecord{rec.number("t"), rec.text("event"), rec.text("robot"), rec.text("kind") == "c", rec.text("state")};
+      const std::string kind = rec.text("kind");
+      if (kind != "c" && kind != "uc") throw InputError(where + ": kind", "expected \"c\" or \"uc\", got \"" + kind + "\"");
+      e.event = EventRecord{rec.number("t"), rec.text("event"), rec.text("robot"), kind == "c", rec.text("state")};
       t.entries.push_back(std::move(e));
     } else if (type == "step") {
+      if (t.robots.empty()) throw InputError(where, "a step record before the header (or a header naming no robots)");
       TraceEntry e;
       e.step.time_s = rec.number("t");
       e.step.state = rec.text("state");

@@ -28,7 +28,7 @@ inline std::string format_bytes(double bytes) {
 // A value for a size flag that is at least `bytes`, in whole units: "97G", "640M", "1M".
 inline std::string size_flag_value_at_least(double bytes) {
   constexpr double kMiB = 1024.0 * 1024.0, kGiB = 1024.0 * kMiB;
-  if (!(bytes < 1e21)) return "0";   // beyond any machine: no limit at all
+  if (!(bytes <= 1.8e19)) return "0";   // beyond what a size flag takes: no limit at all
   if (bytes > kGiB) return std::to_string(static_cast<std::uint64_t>(std::ceil(bytes / kGiB))) + "G";
   return std::to_string(std::max<std::uint64_t>(1, static_cast<std::uint64_t>(std::ceil(bytes / kMiB)))) + "M";
 }

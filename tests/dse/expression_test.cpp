@@ -108,13 +108,16 @@ std::string repeated(const std::string& x, int n) {
 TEST(Expression, NestingBeyond256LevelsIsRefusedWithTheColumnInsteadOfOverflowingTheStack) {
   for (const std::string& deep :
        {repeated("(", 5000) + "1" + repeated(")", 5000) + " > 0", repeated("not ", 50000) + "(1 > 0)",
-        "1" + repeated(" + 1", 50000) + " > 0", repeated("-", 50000) + "1 > 0"}) {
+        "1" + repeated(" + 1", 50000) + " > 0", repeated("-", 50000) + "1 > 0",
+        repeated("abs(", 5000) + "1" + repeated(")", 5000) + " > 0", repeated("min(1, ", 5000) + "1" + repeated(")", 5000) + " > 0"}) {
     const std::string error = expression_error_of(deep);
     EXPECT_NE(error.find("c.json: parameterConstraints[0], column "), std::string::npos) << error.substr(0, 200);
     EXPECT_NE(error.find("nested deeper than 256 levels"), std::string::npos) << error.substr(0, 200);
+    EXPECT_LT(error.size(), 300U) << "the constraint is quoted around the column, not whole";
   }
   // 200 levels of each kind still parse and evaluate (a1 is 0.5).
   EXPECT_TRUE(eval(repeated("(", 200) + "a1" + repeated(")", 200) + " > 0"));
   EXPECT_TRUE(eval(repeated("not ", 200) + "(a1 > 0)"));
   EXPECT_TRUE(eval("a1" + repeated(" + 1", 200) + " > 200"));
+  EXPECT_TRUE(eval(repeated("abs(", 200) + "a1" + repeated(")", 200) + " > 0"));
 }

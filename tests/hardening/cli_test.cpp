@@ -70,7 +70,9 @@ TEST(Hardening, TheFsmAMissionNamesIsAnInputThatNoOutputMayReplace) {
   for (const std::string& args : std::vector<std::string>{"mission run " + mission + " --max-time 5 --trace " + fsm,
                                  "mission run " + mission + " --max-time 5 --svg " + fsm,
                                  "edit " + mission + " -o " + fsm,
-                                 "view " + trace + " --mission " + mission + " -o " + fsm}) {
+                                 "view " + trace + " --mission " + mission + " -o " + fsm,
+                                 "view " + trace + " -o " + fsm,   // the mission its header names
+                                 "view " + trace + " -o " + mission}) {
     const auto r = run_binary(kBin, args);
     EXPECT_EQ(r.status, 2) << args << ": " << r.out;
     EXPECT_NE(r.out.find("is also an input of this command"), std::string::npos) << args << ": " << r.out;
@@ -79,6 +81,12 @@ TEST(Hardening, TheFsmAMissionNamesIsAnInputThatNoOutputMayReplace) {
   const auto both = run_binary(kBin, "mission run " + mission + " --max-time 5 --trace " + trace + " --svg " + trace);
   EXPECT_EQ(both.status, 2);
   EXPECT_NE(both.out.find("is also the --trace output of this command: give --svg another file"), std::string::npos) << both.out;
+  const std::string fresh = (d / "not-yet.jsonl").string();   // neither exists yet: same file by another name
+  fs::remove(fresh);
+  const auto renamed = run_binary(kBin, "run --steps 2 --trace " + fresh + " --svg " + (d / "." / "not-yet.jsonl").string());
+  EXPECT_EQ(renamed.status, 2) << renamed.out;
+  EXPECT_NE(renamed.out.find("is also the --trace output of this command"), std::string::npos) << renamed.out;
+  EXPECT_FALSE(fs::exists(fresh));
 }
 
 TEST(Hardening, DseAndFmuOutputsThatAreInputsThroughALinkOrByNameAreRefusedBeforeAnythingRuns) {
@@ -286,7 +294,7 @@ TEST(Hardening, ANulByteInAJsonInputIsNamedWhereItIs) {
   const auto r = run_binary(kBin, "run " + starts);
   EXPECT_EQ(r.status, 2);
   EXPECT_EQ(r.out, "swarmcheck: error: " + starts + ":1:1: not valid JSON: a NUL byte (a binary file?)\n");
-  const std::string inside = write(d / "nul1.json", std::string("{\"map_size\": 4,\n \"robots\"\0", 28));
+  const std::string inside = write(d / "nul1.json", std::string("{\"map_size\": 4,\n \"robots\"\0", 26));
   const auto r2 = run_binary(kBin, "run " + inside);
   EXPECT_EQ(r2.status, 2);
   EXPECT_EQ(r2.out, "swarmcheck: error: " + inside + ":2:10: not valid JSON: a NUL byte (a binary file?)\n");

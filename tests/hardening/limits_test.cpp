@@ -136,6 +136,14 @@ TEST(Limits, AFifoOrADeviceAsOutputIsRefusedAndASymlinkIsWrittenThrough) {
   EXPECT_EQ(run_binary(kBin, "run --steps 2 --trace " + dangling.string()).status, 1);
   EXPECT_TRUE(fs::is_symlink(dangling));
   EXPECT_EQ(read(d / "made.jsonl").rfind("{\"format\":\"swarmcheck-trace\"", 0), 0U);
+  // Two links deep: both stay.
+  for (const char* name : {"first.jsonl", "second.jsonl", "end.jsonl"}) fs::remove(d / name);
+  fs::create_symlink("second.jsonl", d / "first.jsonl");
+  fs::create_symlink("end.jsonl", d / "second.jsonl");
+  EXPECT_EQ(run_binary(kBin, "run --steps 2 --trace " + (d / "first.jsonl").string()).status, 1);
+  EXPECT_TRUE(fs::is_symlink(d / "first.jsonl"));
+  EXPECT_TRUE(fs::is_symlink(d / "second.jsonl"));
+  EXPECT_TRUE(fs::is_regular_file(fs::symlink_status(d / "end.jsonl")));
   EXPECT_TRUE(temp_files(d).empty());
 }
 
