@@ -277,11 +277,11 @@ std::string trace_system(const std::string& path) {
   return json_io::string_member(h, "system");
 }
 
-int replay(const std::string& path, const std::string& against) {
+int replay(const std::string& path, const std::string& against, std::uint64_t memory_limit_bytes) {
   // A handshake counterexample from `swarmcheck prove` is shown step by step (nothing to re-run).
   if (trace_system(path) == "handshake") return proofs::handshake::show_handshake_trace(path, stdout);
   const Engine engine = against == "model" ? Engine::model : Engine::impl;
-  const ReplayResult r = replay_trace(path, engine);
+  const ReplayResult r = replay_trace(path, engine, memory_limit_bytes);
   if (r.recorded) fmt::print("recorded: {}\n", *r.recorded);
   if (!r.divergence) {
     fmt::print("replay on {}: reproduces the trace ({} records agree bit for bit)\n", against, r.records);
@@ -321,7 +321,11 @@ void add_replay_verb(CLI::App& app, int& exit_code) {
   CLI::App* cmd = app.add_subcommand("replay", "Re-run a trace and name the first field that differs");
   cmd->add_option("trace", *path, "A trace written by run --trace or conform")->required();
   cmd->add_option("--against", *against, "model | impl")->check(CLI::IsMember({"model", "impl"}))->capture_default_str();
-  cmd->callback([path, against, &exit_code] { exit_code = guarded([&] { return replay(*path, *against); }); });
+  auto budgets = std::make_shared<Budgets>();
+  add_budget_options(cmd, *budgets, false);
+  cmd->callback([path, against, budgets, &exit_code] {
+    exit_code = guarded([&] { return replay(*path, *against, budgets->memory_bytes); });
+  });
 }
 
 }  // namespace swarmcheck::cli

@@ -10,6 +10,7 @@
 #include "spec/exploration/scenario.hpp"
 #include "spec/exploration/trace.hpp"
 #include "spec/exploration/trace_field.hpp"
+#include "spec/util/budget.hpp"
 #include "spec/util/hana_diff.hpp"
 #include "spec/util/input_error.hpp"
 #include "spec/util/input_file.hpp"
@@ -158,13 +159,17 @@ ReplayResult replay_with(Sim& sim, std::ifstream& in, const std::string& path, R
 
 }  // namespace
 
-ReplayResult replay_trace(const std::string& path, Engine engine) {
+ReplayResult replay_trace(const std::string& path, Engine engine, std::uint64_t memory_limit_bytes) {
   io_input::check_input_file(path, "trace", false);
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path, "cannot open the trace");
   std::string first;
   if (!std::getline(in, first)) throw InputError(path + ":1", "empty file: expected a trace header");
   const TraceHeader h = read_header(parse_line(first, path, 1), path + ":1");
+  const Scenario& s = h.scenario;
+  require_within(path + ":1", "the trace's " + std::to_string(s.map_size) + " x " + std::to_string(s.map_size) + " map with " +
+                                  std::to_string(s.robots.size()) + " robots",
+                 static_cast<double>(estimated_bytes(engine, s)), memory_limit_bytes, "--memory-limit");
   ReplayResult result;
   result.recorded = h.recorded;
   const std::unique_ptr<Simulation> sim = make_simulation(engine, h.scenario, h.options);

@@ -22,6 +22,8 @@ struct ReplayResult {
 };
 
 // Throws InputError("file:line", ...) for a malformed trace.
-ReplayResult replay_trace(const std::string& path, Engine engine);
+// `memory_limit_bytes` (0: none): a trace whose scenario's map would not fit is refused before
+// anything is allocated (BudgetExceeded at the header).
+ReplayResult replay_trace(const std::string& path, Engine engine, std::uint64_t memory_limit_bytes = 0);
 
 }  // namespace swarmcheck::conformance::exploration

@@ -187,6 +187,14 @@ TEST(Limits, AMapThatCannotFitIsRefusedBeforeAnythingIsAllocatedWithALimitThatWo
   expect_one_error_line(run_binary(kBin, "run " + scenario + " --memory-limit 16G"),
                         scenario + ": a 65536 x 65536 map with 1 robots needs about 96.5 GiB, over the limit of 16.0 GiB "
                         "(raise it with --memory-limit, e.g. --memory-limit 97G, or make the input smaller)");
+  // A trace whose header names such a map: replay refuses it at the header, not with "out of memory".
+  const std::string trace = (d / "t.jsonl").string();
+  ASSERT_EQ(run_binary(kBin, "run --steps 2 --trace " + trace).status, 1);
+  std::string text = read(trace);
+  text.replace(text.find("\"map_size\":10"), 13, "\"map_size\":65536");
+  const std::string huge = write(d / "huge.jsonl", text);
+  expect_one_error_line(run_binary(kBin, "replay " + huge + " --memory-limit 16G"),
+                        huge + ":1: the trace's 65536 x 65536 map with 4 robots needs about");
   const std::string small = write(d / "small.json", R"({"map_size": 1024, "robots": [[0.5, 0.5]]})");
   expect_one_error_line(run_binary(kBin, "run " + small + " --memory-limit 1M"), "over the limit of 1.0 MiB");
   EXPECT_EQ(run_binary(kBin, "run --steps 1 --memory-limit 1M").status, 1);   // the default 10 x 10 fits
