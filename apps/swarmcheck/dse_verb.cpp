@@ -113,11 +113,7 @@ void check_output_folder(const DseArgs& a) {
   for (const char* name : names) {
     const std::string p = (fs::path(a.out_dir) / name).string();
     io::refuse_output_that_is_an_input(p, inputs);
-    std::error_code ec;
-    const fs::file_status st = fs::status(p, ec);
-    if (fs::is_directory(st)) throw InputError(p, "is a folder: the DSE writes a file there (choose another -o)");
-    if (fs::exists(st) && !fs::is_regular_file(st))
-      throw InputError(p, "is not a regular file (a FIFO or a device): the DSE writes a file there (choose another -o)");
+    io::check_output_path(p);
   }
 }
 

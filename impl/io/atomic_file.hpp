@@ -40,6 +40,11 @@ class AtomicFile {
 // The whole content at once, atomically.
 void write_file_atomically(const std::string& path, const std::string& content);
 
+// InputError when `path` could not be written as an output (a folder, a FIFO, a device, a link
+// that cannot be followed), as AtomicFile would refuse it: for a command to check its outputs
+// before long work.
+void check_output_path(const std::string& path);
+
 // InputError when `output` names the same file as one of `inputs` (by path or through a link):
 // a command would otherwise replace the file it reads. Empty paths are ignored.
 void refuse_output_that_is_an_input(const std::string& output, const std::vector<std::string>& inputs);
