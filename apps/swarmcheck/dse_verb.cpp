@@ -39,6 +39,7 @@ struct DseArgs {
   std::string out_dir = "dse-out";
   int32_t threads = 0;         // 0: every core
   bool json = false;
+  Budgets budgets;             // --memory-limit
 };
 
 // SIGINT / SIGTERM: finish the points in flight, keep them in the journal, exit 130 / 143. A second
@@ -223,10 +224,13 @@ int run_rank0(const DseArgs& a, const DesignSpace& space, Executor& executor, co
 int dse_threads(const DseArgs& a) {
   const Plan plan = load_plan(a);
   const DesignSpace space(plan.config, plan.base);
-  check_design_space(space);
+  const int32_t threads = a.threads > 0 ? a.threads : static_cast<int32_t>(std::max(1u, std::thread::hardware_concurrency()));
+  // Points in memory at once: one a thread, no more threads than cores run (TBB), no more than there are points.
+  const auto points_at_once = static_cast<int32_t>(std::min<uint64_t>(
+      {static_cast<uint64_t>(threads), std::max(1u, std::thread::hardware_concurrency()), std::max<uint64_t>(1, space.size())}));
+  check_design_space(space, a.budgets.memory_bytes, points_at_once);
   const StopRequest stop(kDseStopMessage);
   ThreadExecutor executor(space, needed_columns(plan.config), a.threads, &stop.flag());
-  const int32_t threads = a.threads > 0 ? a.threads : static_cast<int32_t>(std::max(1u, std::thread::hardware_concurrency()));
   return run_rank0(a, space, executor, fmt::format("{} thread{}", threads, threads == 1 ? "" : "s"), stop);
 }
 
@@ -239,7 +243,7 @@ int dse_mpi(const DseArgs& a) {
     try {
       const Plan plan = load_plan(a);
       const DesignSpace space(plan.config, plan.base);
-      check_design_space(space);
+      check_design_space(space, a.budgets.memory_bytes);   // one point at a time on each rank
       const std::vector<Column> columns = needed_columns(plan.config);
       mpi::serve([&](const std::string& task) {
         const Genome g = json_io::Json::parse(task).get<Genome>();
@@ -253,7 +257,7 @@ int dse_mpi(const DseArgs& a) {
   const int status = guarded([&] {
     const Plan plan = load_plan(a);
     const DesignSpace space(plan.config, plan.base);
-    check_design_space(space);
+    check_design_space(space, a.budgets.memory_bytes);
     const StopRequest stop(kDseStopMessage);
     MpiExecutor executor(stop.flag());
     const int rc = run_rank0(a, space, executor, fmt::format("{} MPI ranks ({} computing)", session.size(), session.size() - 1), stop);
@@ -290,6 +294,7 @@ void add_dse_verb(CLI::App& app, int& exit_code) {
   cmd->add_option("-o,--out", a->out_dir, "Folder for results.csv, results.json, report.html, report.svg, journal.jsonl")
       ->capture_default_str();
   add_threads_option(cmd, a->threads, "Design points in parallel");
+  add_budget_options(cmd, a->budgets, false);
   cmd->add_flag("--json", a->json, "Print the results object (results.json) instead of the summary");
   cmd->callback([a, &exit_code] {
     exit_code = guarded([&] { return dse(*a); });

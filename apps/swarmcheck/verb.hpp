@@ -3,8 +3,10 @@
 // exposes `void add_<name>_verb(CLI::App& app, int& exit_code)`, which registers a subcommand
 // whose callback runs the verb inside guarded() and stores its exit status.
 #include <CLI/CLI.hpp>
+#include <sys/resource.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <charconv>
 #include <memory>
 #include <cstdint>
@@ -99,12 +101,25 @@ inline CLI::Validator seed_validator() {
 
 // ---- resource budgets (spec/util/budget.hpp) ----------------------------------------------------
 
-// The default memory limit: three quarters of the machine's physical memory.
-inline std::uint64_t default_memory_limit() {
+// The memory this process may have: the machine's physical memory, or less where a limit says so
+// (`ulimit -v`, a container's cgroup v2 memory.max), since beyond those an allocation fails or
+// the process is killed whatever the machine has.
+inline std::uint64_t usable_memory() {
   const long pages = ::sysconf(_SC_PHYS_PAGES), page = ::sysconf(_SC_PAGE_SIZE);
-  if (pages <= 0 || page <= 0) return std::uint64_t{8} << 30;
-  return static_cast<std::uint64_t>(pages) * static_cast<std::uint64_t>(page) / 4 * 3;
+  std::uint64_t bytes = pages > 0 && page > 0 ? static_cast<std::uint64_t>(pages) * static_cast<std::uint64_t>(page)
+                                              : std::uint64_t{32} << 30;
+  struct rlimit as {};
+  if (::getrlimit(RLIMIT_AS, &as) == 0 && as.rlim_cur != RLIM_INFINITY) bytes = std::min<std::uint64_t>(bytes, as.rlim_cur);
+  if (std::FILE* f = std::fopen("/sys/fs/cgroup/memory.max", "r")) {   // "max" or a number of bytes
+    unsigned long long cgroup = 0;
+    if (std::fscanf(f, "%llu", &cgroup) == 1 && cgroup > 0) bytes = std::min<std::uint64_t>(bytes, cgroup);
+    std::fclose(f);
+  }
+  return bytes;
 }
+
+// The default memory limit: three quarters of usable_memory().
+inline std::uint64_t default_memory_limit() { return usable_memory() / 4 * 3; }
 inline constexpr std::uint64_t kDefaultMaxTraceBytes = std::uint64_t{8} << 30;   // 8 GiB
 
 // "64G", "512M", "1.5G", "2T", "4096" (bytes), with an optional "iB"/"B"; 0 turns a limit off.
@@ -151,7 +166,8 @@ inline void add_budget_options(CLI::App* cmd, Budgets& b, bool trace) {
   b.memory_bytes = default_memory_limit();
   cmd->add_option_function<std::string>(
          "--memory-limit", [&b](const std::string& v) { b.memory_bytes = size_option(v, "--memory-limit"); },
-         "Refuse work estimated to need more memory than this (default: 3/4 of physical memory, "
+         "Refuse work estimated to need more memory than this (default: 3/4 of physical memory or of "
+         "a lower ulimit -v / cgroup limit, "
          "here " + format_bytes(static_cast<double>(b.memory_bytes)) + "; 0: no limit)")
       ->type_name("SIZE");
   if (!trace) return;

@@ -5,11 +5,19 @@
 #include <tbb/partitioner.h>
 #include <tbb/task_arena.h>
 
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cstdint>
 #include <memory>
 #include <mutex>
+#include <string>
+#include <vector>
 
 #include "impl/dse/genetic.hpp"
 #include "impl/dse/journal.hpp"
+#include "spec/util/budget.hpp"
+#include "swarmcheck/exploration.hpp"
 
 namespace swarmcheck::dse {
 namespace {
@@ -118,24 +126,64 @@ std::optional<std::string> point_problem(const DesignSpace& space, const Genome&
   return std::nullopt;
 }
 
-void check_design_space(const DesignSpace& space) {
-  const DseConfig& c = space.config();
-  if (c.algorithm == Algorithm::exhaustive) {
-    for (uint64_t i = 0; i < space.size(); ++i) {
-      const Genome g = space.genome_of(i);
-      if (space.violated_parameter_constraint(g) >= 0) continue;
-      if (auto problem = point_problem(space, g)) throw InputError(c.file, *problem);
-    }
-    return;
+namespace {
+// What a point's runs need in memory: they go one after another on one thread, so the largest's.
+struct PointNeed {
+  double bytes = -1;
+  Genome genome;
+  int32_t map_size = 0;
+  std::size_t robots = 0;
+};
+PointNeed point_need(const DesignSpace& space, const Genome& g) {
+  PointNeed need;
+  need.genome = g;
+  for (int32_t r = 0; r < space.replicates(g); ++r) {
+    const exploration::Scenario s = space.scenario(g, r);
+    const double bytes = static_cast<double>(exploration::Exploration::estimated_bytes(s));
+    if (bytes > need.bytes) need = PointNeed{bytes, g, s.map_size, s.robots.size()};
   }
-  // Genetic: each value once, the other parameters at their first value.
-  for (std::size_t p = 0; p < c.parameters.size(); ++p)
-    for (std::size_t v = 0; v < c.parameters[p].values.size(); ++v) {
-      Genome g(c.parameters.size(), 0);
-      g[p] = static_cast<int32_t>(v);
-      if (space.violated_parameter_constraint(g) >= 0) continue;
-      if (auto problem = point_problem(space, g)) throw InputError(c.file, *problem);
-    }
+  return need;
+}
+
+// The `points_at_once` largest points together must fit (named after the largest).
+void require_points_fit(const DesignSpace& space, std::vector<PointNeed> needs, std::uint64_t memory_limit_bytes,
+                        int32_t points_at_once) {
+  if (needs.empty()) return;
+  const std::size_t k = std::min(needs.size(), static_cast<std::size_t>(std::max(1, points_at_once)));
+  std::partial_sort(needs.begin(), needs.begin() + static_cast<std::ptrdiff_t>(k), needs.end(),
+                    [](const PointNeed& a, const PointNeed& b) { return a.bytes > b.bytes; });
+  double together = 0;
+  for (std::size_t i = 0; i < k; ++i) together += needs[i].bytes;
+  const PointNeed& largest = needs.front();
+  const std::string at_once =
+      k > 1 ? fmt::format(", with the {} largest points at once (--threads {}; --threads 1 runs one at a time)", k, k) : "";
+  require_within(space.config().file,
+                 fmt::format("design point {}: a {} x {} map with {} robots{}", space.describe(largest.genome),
+                             largest.map_size, largest.map_size, largest.robots, at_once),
+                 together, memory_limit_bytes, "--memory-limit");
+}
+}  // namespace
+
+void check_design_space(const DesignSpace& space, std::uint64_t memory_limit_bytes, int32_t points_at_once) {
+  const DseConfig& c = space.config();
+  std::vector<PointNeed> needs;
+  const auto check = [&](const Genome& g) {
+    if (space.violated_parameter_constraint(g) >= 0) return;
+    if (auto problem = point_problem(space, g)) throw InputError(c.file, *problem);
+    if (memory_limit_bytes != 0) needs.push_back(point_need(space, g));
+  };
+  if (c.algorithm == Algorithm::exhaustive) {
+    for (uint64_t i = 0; i < space.size(); ++i) check(space.genome_of(i));
+  } else {
+    // Genetic: each value once, the other parameters at their first value.
+    for (std::size_t p = 0; p < c.parameters.size(); ++p)
+      for (std::size_t v = 0; v < c.parameters[p].values.size(); ++v) {
+        Genome g(c.parameters.size(), 0);
+        g[p] = static_cast<int32_t>(v);
+        check(g);
+      }
+  }
+  require_points_fit(space, std::move(needs), memory_limit_bytes, points_at_once);
 }
 
 SweepOutcome run_sweep(const DesignSpace& space, Executor& executor, const SweepOptions& options) {

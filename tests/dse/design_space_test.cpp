@@ -9,6 +9,7 @@
 #include "impl/dse/design_space.hpp"
 #include "impl/dse/sweep.hpp"
 #include "spec/exploration/scenario.hpp"
+#include "spec/util/budget.hpp"
 
 using namespace swarmcheck;
 using namespace swarmcheck::dse;
@@ -73,6 +74,25 @@ TEST(DesignSpace, BadCombinationsAreFoundBeforeAnythingRunsAndNameThePoint) {
   }
   const DseConfig crowded = config(R"({"nRobots": [200], "mapSize": [10]})");
   EXPECT_THROW(check_design_space(DesignSpace(crowded, exploration::default_scenario())), InputError);
+}
+
+// The memory check adds up the points that may be in memory at once, largest first: a small point
+// beside a large one fits where two large ones would not.
+TEST(DesignSpace, TheMemoryCheckCountsTheLargestPointsThatRunAtOnce) {
+  const std::uint64_t limit = std::uint64_t{1500} << 20;   // 1.5 GiB; an 8192^2 map needs 1 GiB
+  const DseConfig one_large = config(R"({"mapSize": [64, 8192]})");
+  EXPECT_NO_THROW(check_design_space(DesignSpace(one_large, exploration::default_scenario()), limit, 2));
+  const DseConfig two_large = config(R"({"mapSize": [8190, 8192]})");
+  EXPECT_NO_THROW(check_design_space(DesignSpace(two_large, exploration::default_scenario()), limit, 1));
+  try {
+    check_design_space(DesignSpace(two_large, exploration::default_scenario()), limit, 2);
+    FAIL() << "two 1 GiB points at once were accepted under 1.5 GiB";
+  } catch (const BudgetExceeded& e) {
+    EXPECT_NE(std::string(e.what()).find("design point mapSize=8192: a 8192 x 8192 map with 4 robots, with the 2 largest "
+                                         "points at once (--threads 2; --threads 1 runs one at a time) needs about 2.0 GiB"),
+              std::string::npos) << e.what();
+  }
+  EXPECT_NO_THROW(check_design_space(DesignSpace(two_large, exploration::default_scenario()), 0, 8));   // 0: no limit
 }
 
 TEST(DesignSpace, TheKeyChangesWithAnythingTheRunsDependOn) {

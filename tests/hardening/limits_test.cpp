@@ -203,6 +203,46 @@ TEST(Limits, AMapThatCannotFitIsRefusedBeforeAnythingIsAllocatedWithALimitThatWo
   EXPECT_EQ(bad.out.rfind("swarmcheck: error: --memory-limit: expected a size such as 8G, 512M, 1.5T or a number of bytes (0: no limit), got \"12Q\"", 0), 0U) << bad.out;
 }
 
+// A DSE point's map that cannot fit (map_size is a knob) is refused before the sweep, naming the
+// point; points that fit alone but not together on every thread say so.
+TEST(Limits, ADsePointThatCannotFitIsRefusedBeforeTheSweepNamingThePoint) {
+  const fs::path d = scratch("dse-memory");
+  const std::string config = write(d / "big.dse.json", R"({"algorithm": {"type": "exhaustive"},
+    "parameters": {"map_size": [64, 65536]},
+    "objectiveDefinitions": {"internalFunctions": {"eP": {"columnID": "eP", "objectiveType": "max"}}},
+    "ranking": {"pareto": {"eP": "+"}}})");
+  const std::string out = (d / "out").string();
+  expect_one_error_line(run_binary(kBin, "dse " + config + " -o " + out + " --memory-limit 16G --threads 1"),
+                        config + ": design point map_size=65536: a 65536 x 65536 map with 4 robots needs about 64.0 GiB, "
+                        "over the limit of 16.0 GiB (raise it with --memory-limit, e.g. --memory-limit 65G");
+  EXPECT_FALSE(fs::exists(out));
+  const std::string two = write(d / "two.dse.json", R"({"algorithm": {"type": "exhaustive"},
+    "parameters": {"map_size": [64, 8192]},
+    "objectiveDefinitions": {"internalFunctions": {"eP": {"columnID": "eP", "objectiveType": "max"}}},
+    "ranking": {"pareto": {"eP": "+"}}})");
+  const std::string both = write(d / "both.dse.json", R"({"algorithm": {"type": "exhaustive"},
+    "parameters": {"map_size": [8192, 8190]},
+    "objectiveDefinitions": {"internalFunctions": {"eP": {"columnID": "eP", "objectiveType": "max"}}},
+    "ranking": {"pareto": {"eP": "+"}}})");
+  if (std::thread::hardware_concurrency() >= 2)
+    expect_one_error_line(run_binary(kBin, "dse " + both + " -o " + out + " --memory-limit 1500M --threads 2"),
+                          "design point map_size=8192: a 8192 x 8192 map with 4 robots, with the 2 largest points at once "
+                          "(--threads 2; --threads 1 runs one at a time) needs about 2.0 GiB");
+
+  expect_one_error_line(run_binary(kBin, "dse " + two + " -o " + out + " --memory-limit 900M --threads 1"),
+                        "a 8192 x 8192 map with 4 robots needs about 1.0 GiB");
+  EXPECT_FALSE(fs::exists(out));
+}
+
+// The default limit is 3/4 of what the process may have: under `ulimit -v` a map that the
+// machine could hold but the process cannot is refused with the limit, not "out of memory".
+TEST(Limits, TheDefaultMemoryLimitFollowsUlimitV) {
+  const fs::path d = scratch("ulimit");
+  const std::string scenario = write(d / "s.json", R"({"map_size": 16384, "robots": [[0.5, 0.5]]})");
+  const auto r = run_binary("ulimit -v 2000000; " + kBin, "run " + scenario);   // 1.9 GiB of address space
+  expect_one_error_line(r, scenario + ": a 16384 x 16384 map with 1 robots needs about 6.0 GiB, over the limit of 1.4 GiB");
+}
+
 TEST(Limits, AProductOverTheMemoryLimitStopsCleanlyWithTheStatesExplored) {
   const fs::path d = scratch("product");
   const std::string c2 = kSource + "/scenarios/thesis/control2.fsm";
