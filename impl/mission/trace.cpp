@@ -1,9 +1,12 @@
 // Writing and reading mission traces (JSON Lines).
 #include "impl/mission/trace.hpp"
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <istream>
 #include <memory>
+#include <fmt/format.h>
 #include <nlohmann/json.hpp>
 #include <ostream>
 
@@ -136,6 +139,8 @@ MissionTrace read_trace(std::istream& in, const std::string& source) {
   MissionTrace t;
   std::string line;
   std::size_t n = 0;
+  bool header = false;
+  double last_t = 0;   // of the last event or step
   while (std::getline(in, line)) {
     ++n;
     if (line.empty()) continue;
@@ -143,20 +148,41 @@ MissionTrace read_trace(std::istream& in, const std::string& source) {
     const Json j = json_io::parse_json_text(line, source, static_cast<int64_t>(n));
     const Record rec(j, where);
     const std::string type = rec.text("type");
+    if (type != "header" && !header) throw InputError(where, "a " + type + " record before the header");
+    // A time of the record: finite, >= 0, and for events and steps not before the last one.
+    const auto time = [&](const char* key, bool ordered) {
+      const double v = rec.number(key);
+      if (!std::isfinite(v) || v < 0) throw InputError(where + ": " + key, fmt::format("expected a time >= 0 s, got {}", v));
+      if (ordered && v < last_t)
+        throw InputError(where + ": " + key, fmt::format("expected records in time order, got {} after {}", v, last_t));
+      if (ordered) last_t = v;
+      return v;
+    };
+    const auto robot = [&](const char* key) {
+      std::string name = rec.text(key);
+      if (std::find(t.robots.begin(), t.robots.end(), name) == t.robots.end())
+        throw InputError(where + ": " + key, "\"" + name + "\" is not a robot of the header");
+      return name;
+    };
     if (type == "header") {
+      if (header) throw InputError(where, "a second header");
+      header = true;
       t.initial_state = rec.text("initial_state");
       t.robots = rec.texts("robots");
     } else if (type == "event") {
       TraceEntry e;
+      e.line = n;
       e.is_event = true;
       const std::string kind = rec.text("kind");
       if (kind != "c" && kind != "uc") throw InputError(where + ": kind", "expected \"c\" or \"uc\", got \"" + kind + "\"");
-      e.event = EventRecord{rec.number("t"), rec.text("event"), rec.text("robot"), kind == "c", rec.text("state")};
+      const double at = time("t", true);
+      e.event = EventRecord{at, rec.text("event"), robot("robot"), kind == "c", rec.text("state")};
       t.entries.push_back(std::move(e));
     } else if (type == "step") {
       if (t.robots.empty()) throw InputError(where, "a step record before the header (or a header naming no robots)");
       TraceEntry e;
-      e.step.time_s = rec.number("t");
+      e.line = n;
+      e.step.time_s = time("t", true);
       e.step.state = rec.text("state");
       for (const auto& p : rec.points("positions")) e.step.positions.push_back({p[0], p[1]});
       e.step.blocked = rec.flags("blocked");
@@ -171,10 +197,11 @@ MissionTrace read_trace(std::istream& in, const std::string& source) {
       t.entries.push_back(std::move(e));
     } else if (type == "interval") {
       swarmcheck::mission::IntervalRecord i;
-      i.robot = rec.text("robot");
+      i.robot = robot("robot");
       i.activity = json_io::enum_from_string<swarmcheck::mission::Activity>(rec.text("activity"), where + ": activity");
-      i.from_s = rec.number("from");
-      i.to_s = rec.number("to");
+      i.from_s = time("from", false);
+      i.to_s = time("to", false);
+      if (i.to_s < i.from_s) throw InputError(where + ": to", fmt::format("expected a time >= from ({}), got {}", i.from_s, i.to_s));
       t.intervals.push_back(std::move(i));
     } else {
       throw InputError(where, "unknown record type \"" + type + "\"");

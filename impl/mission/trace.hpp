@@ -35,6 +35,7 @@ class TraceWriter : public RunObserver {
 };
 
 struct TraceEntry {
+  std::size_t line = 0;   // in the file, from 1
   bool is_event = false;
   EventRecord event{};  // when is_event; {}: the bool is false, not indeterminate (UBSan)
   StepRecord step{};    // otherwise
@@ -47,7 +48,10 @@ struct MissionTrace {
   std::vector<swarmcheck::mission::IntervalRecord> intervals;  // in file order
 };
 
-// Reads a trace; a malformed line is an InputError at "source:line".
+// Reads a trace; a malformed line is an InputError at "source:line". Beyond each record's
+// fields: the header comes first; times are finite and >= 0; events and steps are in time order
+// (never earlier than the record before); an event names a robot of the header; an interval
+// names one too and does not end before it starts.
 MissionTrace read_trace(std::istream& in, const std::string& source);
 
 }  // namespace swarmcheck::impl::mission

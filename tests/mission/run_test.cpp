@@ -173,4 +173,26 @@ TEST(MissionRun, AMalformedTraceRecordIsRefusedWithItsLineAndJsonPath) {
   EXPECT_EQ(error_of(R"({"type":"step","t":0.0,"state":"s1","positions":[[0,0]],"blocked":[false]})"),
             "t.jsonl:2: a step record has 1 positions, 1 blocked and 1 yielded flags; the header names 2 robots");
   EXPECT_EQ(error_of("[1, 2]"), "t.jsonl:2: expected a JSON object, got a list");
+  // Beyond the fields: times, order, robots, the header first.
+  EXPECT_EQ(error_of(R"({"type":"step","t":-1,"state":"s1","positions":[[0,0],[1,1]],"blocked":[false,false]})"),
+            "t.jsonl:2: t: expected a time >= 0 s, got -1");
+  EXPECT_EQ(error_of(R"({"type":"event","t":0,"event":"a3s","robot":"C","kind":"c","state":"s2"})"),
+            "t.jsonl:2: robot: \"C\" is not a robot of the header");
+  EXPECT_EQ(error_of(R"({"type":"interval","robot":"A","activity":"busy","from":2,"to":1})"),
+            "t.jsonl:2: to: expected a time >= from (2), got 1");
+  EXPECT_EQ(error_of(header), "t.jsonl:2: a second header");
+  const auto in_order = [&](const std::string& a, const std::string& b) {
+    std::istringstream in(header + "\n" + a + "\n" + b + "\n");
+    try {
+      swarmcheck::impl::mission::read_trace(in, "t.jsonl");
+    } catch (const swarmcheck::InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("(no error)");
+  };
+  const std::string later = R"({"type":"step","t":0.5,"state":"s1","positions":[[0,0],[1,1]],"blocked":[false,false]})";
+  EXPECT_EQ(in_order(later, step), "t.jsonl:3: t: expected records in time order, got 0 after 0.5");
+  EXPECT_EQ(in_order(step, later), "(no error)");
+  std::istringstream headless(step + "\n");
+  EXPECT_THROW(swarmcheck::impl::mission::read_trace(headless, "t.jsonl"), swarmcheck::InputError);
 }

@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 
 #include "tests/util/shell.hpp"
 
@@ -88,6 +89,43 @@ TEST(ViewsCli, PicturesAreWrittenForRunsMissionsAndAutomata) {
     EXPECT_EQ(text.rfind("<svg", 0), 0u) << f;
     EXPECT_NE(text.find("</svg>"), std::string::npos) << f;
   }
+}
+
+// A mission trace is checked against its mission: every event a transition of the mission's FSM
+// from the state the events before led to, of the robot its meaning names, with the FSM's kind;
+// every step in the state the events led to. An edited trace is status 2 at its line.
+TEST(ViewsCli, AMissionTraceThatIsNotARunOfItsMissionIsStatus2AtTheLine) {
+  const fs::path d = scratch() / "mission-trace";
+  fs::create_directories(d);
+  const std::string trace = (d / "m.jsonl").string();
+  ASSERT_EQ(run_binary(kBin, "mission run " + kSource + "/scenarios/thesis/thesis-mission.json --body kinematic --trace " + trace).status, 0);
+  std::stringstream buffer;
+  buffer << std::ifstream(trace).rdbuf();
+  const std::string good = buffer.str();
+  const std::string out = (d / "m.html").string();
+  ASSERT_EQ(run_binary(kBin, "view " + trace + " -o " + out).status, 0);
+  // Line 3 of the thesis mission's trace: {"type":"event","t":0.0,"event":"b8e","robot":"B","kind":"uc","state":"s4"}
+  const auto edited = [&](const std::string& from, const std::string& to) {
+    std::string text = good;
+    const std::size_t at = text.find(from);
+    EXPECT_NE(at, std::string::npos) << from;
+    if (at != std::string::npos) text.replace(at, from.size(), to);
+    return write(d / "edited.jsonl", text);
+  };
+  const auto refused = [&](const std::string& file, const std::string& part) {
+    const auto r = run_binary(kBin, "view " + file + " --mission " + kSource + "/scenarios/thesis/thesis-mission.json -o " + (d / "e.html").string());
+    EXPECT_EQ(r.status, 2) << r.out;
+    EXPECT_NE(r.out.find(part), std::string::npos) << "expected \"" << part << "\" in: " << r.out;
+    EXPECT_FALSE(fs::exists(d / "e.html"));
+  };
+  const std::string b8e = R"("event":"b8e","robot":"B","kind":"uc","state":"s4")";
+  refused(edited(b8e, R"("event":"b8x","robot":"B","kind":"uc","state":"s4")"), "edited.jsonl:3: event: \"b8x\" is not an event of control2.fsm");
+  refused(edited(b8e, R"("event":"b8e","robot":"A","kind":"uc","state":"s4")"), "edited.jsonl:3: robot: expected \"B\"");
+  refused(edited(b8e, R"("event":"b8e","robot":"B","kind":"c","state":"s4")"), "edited.jsonl:3: kind: expected \"uc\"");
+  refused(edited(b8e, R"("event":"b8e","robot":"B","kind":"uc","state":"s9")"), "edited.jsonl:3: state: expected \"s4\"");
+  refused(edited(R"("event":"a5e")", R"("event":"b8e")"), "edited.jsonl:2: robot: expected \"B\"");
+  refused(edited(R"("robots":["A","B"])", R"("robots":["B","A"])"), "edited.jsonl:1: robots[0]: expected \"A\"");
+  refused(edited(R"({"type":"step","t":0.05,"state":")", R"({"type":"step","t":0.05,"state":"x)"), ": state: expected");
 }
 
 TEST(ViewsCli, ServeRefusesABadPort) {
