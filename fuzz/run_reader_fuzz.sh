@@ -3,15 +3,15 @@
 # on a copy of its seed corpus, taken from the shipped files (the repository is never written to).
 #
 # usage: run_reader_fuzz.sh NAME SOURCE_DIR BUILD_DIR SECONDS [SWARMCHECK_BIN]
-#   NAME: fsm | scenario | mission | trace
+#   NAME: fsm | scenario | mission | trace | dse
 #   SWARMCHECK_BIN (trace only, optional): the built CLI, to add fresh `run --trace` seeds.
 #
-# Objects go to BUILD_DIR/fuzz/obj, shared by the four targets and rebuilt only when a source,
+# Objects go to BUILD_DIR/fuzz/obj, shared by the five targets and rebuilt only when a source,
 # a header it includes or the flags change (make, with clang's dependency files); a lock lets
-# the four ctests run at once. A crashing input is saved as BUILD_DIR/fuzz/artifacts/NAME-*.
+# the five ctests run at once. A crashing input is saved as BUILD_DIR/fuzz/artifacts/NAME-*.
 # Exit 77 (ctest: skipped) only when clang++ or its libFuzzer runtime is not installed.
 set -eu
-[ $# -ge 4 ] || { echo "usage: $0 fsm|scenario|mission|trace SOURCE_DIR BUILD_DIR SECONDS [SWARMCHECK_BIN]" >&2; exit 2; }
+[ $# -ge 4 ] || { echo "usage: $0 fsm|scenario|mission|trace|dse SOURCE_DIR BUILD_DIR SECONDS [SWARMCHECK_BIN]" >&2; exit 2; }
 name=$1
 src=$(cd "$2" && pwd)
 out=$3/fuzz
@@ -47,7 +47,12 @@ case $name in
       $(cd "$src" && ls impl/io/*.cpp model/exploration/*.cpp impl/exploration/*.cpp spec/exploration/*.cpp |
         grep -v '^spec/exploration/scenario.cpp$') spec/util/sym.cpp"
     libs="-ltbb" max_len=16384 ;;
-  *) echo "run_reader_fuzz.sh: unknown target \"$name\" (fsm, scenario, mission or trace)" >&2; exit 2 ;;
+  dse)
+    sources="impl/dse/config.cpp impl/dse/expression.cpp impl/dse/names.cpp impl/dse/design_space.cpp"
+    # The exploration spec the design space builds scenarios with: listed, not named.
+    support="$(cd "$src" && ls spec/exploration/*.cpp) spec/util/sym.cpp"
+    libs="-lfmt" max_len=8192 ;;
+  *) echo "run_reader_fuzz.sh: unknown target \"$name\" (fsm, scenario, mission, trace or dse)" >&2; exit 2 ;;
 esac
 sources="fuzz/${name}_reader_fuzz.cpp $sources"
 
@@ -120,6 +125,7 @@ case $name in
   fsm) seed "$src"/fuzz/corpus/fsm/* $(find "$src/scenarios" -name '*.fsm') ;;
   scenario) seed $(find "$src/scenarios" -name '*.json') ;;
   mission) seed $(grep -rl --include='*.json' --exclude-dir=node_modules '"marked_states"' "$src/scenarios" "$src/tests") ;;
+  dse) seed $(find "$src/scenarios" "$src/bench" -name '*.dse.json') "$src"/fuzz/corpus/dse/* ;;
   trace)
     seed "$src"/fuzz/corpus/trace/*
     if [ -n "$bin" ] && [ -x "$bin" ]; then   # fresh traces from the built CLI, small enough to replay fast

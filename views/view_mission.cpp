@@ -48,48 +48,6 @@ Json mission_json(const sm::Mission& m) {
           {"robots", robots}, {"tasks", tasks}, {"regions", regions}, {"events", events}};
 }
 
-// The trace is a run of the mission: its robots, in order; its events, each an event of the
-// mission's FSM, of the robot its meaning names, controllable as the FSM says, and leading from
-// the state before it to the state the record names (the supervisor's transition); and every
-// step record's state the state the events so far have led to.
-void check_trace_against_mission(const impl::mission::MissionTrace& t, const sm::Mission& m, const std::string& path) {
-  if (t.robots.size() != m.robots.size())
-    throw InputError(path + ":1", fmt::format("the trace has {} robots, the mission {}", t.robots.size(), m.robots.size()));
-  for (std::size_t r = 0; r < m.robots.size(); ++r)
-    if (t.robots[r] != m.robots[r].name)
-      throw InputError(path + ":1: robots[" + std::to_string(r) + "]",
-                       "expected \"" + m.robots[r].name + "\" (the mission's robot " + std::to_string(r + 1) + "), got \"" + t.robots[r] + "\"");
-  if (t.initial_state != m.initial_state)
-    throw InputError(path + ":1: initial_state", "expected the mission's \"" + m.initial_state + "\", got \"" + t.initial_state + "\"");
-  std::string state = m.initial_state;
-  for (const auto& e : t.entries) {
-    const std::string where = path + ":" + std::to_string(e.line);
-    if (!e.is_event) {
-      if (e.step.state != state)
-        throw InputError(where + ": state", "expected \"" + state + "\" (where the events so far lead), got \"" + e.step.state + "\"");
-      continue;
-    }
-    const auto meaning = m.events.find(e.event.event);
-    if (meaning == m.events.end())
-      throw InputError(where + ": event", "\"" + e.event.event + "\" is not an event of " + m.fsm_name);
-    const std::string& robot = m.robots[meaning->second.robot].name;
-    if (e.event.robot != robot)
-      throw InputError(where + ": robot", "expected \"" + robot + "\" (" + e.event.event + " is robot " + robot + "'s), got \"" + e.event.robot + "\"");
-    const bool controllable = m.fsm.events.at(e.event.event).controllable;
-    if (e.event.controllable != controllable)
-      throw InputError(where + ": kind", fmt::format("expected \"{}\" ({} is {} in {}), got \"{}\"", controllable ? "c" : "uc",
-                                                     e.event.event, controllable ? "controllable" : "uncontrollable", m.fsm_name,
-                                                     e.event.controllable ? "c" : "uc"));
-    const std::optional<std::string> next = swarmcheck::supervisor::successor(m.fsm, state, e.event.event);
-    if (!next)
-      throw InputError(where + ": event", "\"" + e.event.event + "\" is not enabled in state \"" + state + "\" of " + m.fsm_name);
-    if (*next != e.event.state_after)
-      throw InputError(where + ": state", "expected \"" + *next + "\" (" + e.event.event + " from \"" + state + "\" in " +
-                                             m.fsm_name + "), got \"" + e.event.state_after + "\"");
-    state = *next;
-  }
-}
-
 }  // namespace
 
 std::string mission_file_of_trace(const std::string& text, const std::string& path, const ViewOptions& o) {
@@ -102,7 +60,7 @@ Page mission_page(const std::string& text, const std::string& path, const ViewOp
   const impl::mission::MissionTrace t = impl::mission::read_trace(in, path);
   const Json header = json_lines(text.substr(0, text.find('\n')), path).front().json;
   const sm::Mission m = load_named_mission(header, path, o);
-  check_trace_against_mission(t, m, path);
+  impl::mission::check_trace_against_mission(t, m, path);
   std::vector<const impl::mission::StepRecord*> steps;
   Json events = Json::array();
   for (const auto& e : t.entries) {

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <optional>
 #include <istream>
 #include <memory>
 #include <fmt/format.h>
@@ -208,6 +209,44 @@ MissionTrace read_trace(std::istream& in, const std::string& source) {
     }
   }
   return t;
+}
+
+void check_trace_against_mission(const MissionTrace& t, const swarmcheck::mission::Mission& m, const std::string& path) {
+  if (t.robots.size() != m.robots.size())
+    throw InputError(path + ":1", fmt::format("the trace has {} robots, the mission {}", t.robots.size(), m.robots.size()));
+  for (std::size_t r = 0; r < m.robots.size(); ++r)
+    if (t.robots[r] != m.robots[r].name)
+      throw InputError(path + ":1: robots[" + std::to_string(r) + "]",
+                       "expected \"" + m.robots[r].name + "\" (the mission's robot " + std::to_string(r + 1) + "), got \"" + t.robots[r] + "\"");
+  if (t.initial_state != m.initial_state)
+    throw InputError(path + ":1: initial_state", "expected the mission's \"" + m.initial_state + "\", got \"" + t.initial_state + "\"");
+  std::string state = m.initial_state;
+  for (const auto& e : t.entries) {
+    const std::string where = path + ":" + std::to_string(e.line);
+    if (!e.is_event) {
+      if (e.step.state != state)
+        throw InputError(where + ": state", "expected \"" + state + "\" (where the events so far lead), got \"" + e.step.state + "\"");
+      continue;
+    }
+    const auto meaning = m.events.find(e.event.event);
+    if (meaning == m.events.end())
+      throw InputError(where + ": event", "\"" + e.event.event + "\" is not an event of " + m.fsm_name);
+    const std::string& robot = m.robots[meaning->second.robot].name;
+    if (e.event.robot != robot)
+      throw InputError(where + ": robot", "expected \"" + robot + "\" (" + e.event.event + " is robot " + robot + "'s), got \"" + e.event.robot + "\"");
+    const bool controllable = m.fsm.events.at(e.event.event).controllable;
+    if (e.event.controllable != controllable)
+      throw InputError(where + ": kind", fmt::format("expected \"{}\" ({} is {} in {}), got \"{}\"", controllable ? "c" : "uc",
+                                                     e.event.event, controllable ? "controllable" : "uncontrollable", m.fsm_name,
+                                                     e.event.controllable ? "c" : "uc"));
+    const std::optional<std::string> next = swarmcheck::supervisor::successor(m.fsm, state, e.event.event);
+    if (!next)
+      throw InputError(where + ": event", "\"" + e.event.event + "\" is not enabled in state \"" + state + "\" of " + m.fsm_name);
+    if (*next != e.event.state_after)
+      throw InputError(where + ": state", "expected \"" + *next + "\" (" + e.event.event + " from \"" + state + "\" in " +
+                                             m.fsm_name + "), got \"" + e.event.state_after + "\"");
+    state = *next;
+  }
 }
 
 }  // namespace swarmcheck::impl::mission

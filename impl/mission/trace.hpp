@@ -54,4 +54,11 @@ struct MissionTrace {
 // names one too and does not end before it starts.
 MissionTrace read_trace(std::istream& in, const std::string& source);
 
+// The trace is a run of the mission `m`: its robots, in order, and initial state; its events,
+// each an event of the mission's FSM, of the robot its meaning names, controllable as the FSM
+// says, and leading from the state before it to the state the record names (the supervisor's
+// transition); and every step record's state the state the events so far have led to. An
+// InputError at "source:line: field" otherwise.
+void check_trace_against_mission(const MissionTrace& t, const swarmcheck::mission::Mission& m, const std::string& source);
+
 }  // namespace swarmcheck::impl::mission
