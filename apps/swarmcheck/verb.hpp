@@ -15,6 +15,7 @@
 #include <functional>
 #include <new>
 #include <string>
+#include <string_view>
 
 #include "spec/util/budget.hpp"
 #include "spec/util/input_error.hpp"
@@ -110,9 +111,34 @@ inline std::uint64_t usable_memory() {
                                               : std::uint64_t{32} << 30;
   struct rlimit as {};
   if (::getrlimit(RLIMIT_AS, &as) == 0 && as.rlim_cur != RLIM_INFINITY) bytes = std::min<std::uint64_t>(bytes, as.rlim_cur);
-  if (std::FILE* f = std::fopen("/sys/fs/cgroup/memory.max", "r")) {   // "max" or a number of bytes
-    unsigned long long cgroup = 0;
-    if (std::fscanf(f, "%llu", &cgroup) == 1 && cgroup > 0) bytes = std::min<std::uint64_t>(bytes, cgroup);
+  // A control group may cap memory, and so may each group above it: cgroup v2 ("0::/path" in
+  // /proc/self/cgroup, memory.max: "max" or bytes) or v1 ("N:memory:/path",
+  // memory/.../memory.limit_in_bytes: bytes, about 2^63 for none).
+  const auto cap_along = [&bytes](std::string group, const std::string& root, const char* file) {
+    for (;;) {
+      if (std::FILE* f = std::fopen((root + group + "/" + file).c_str(), "r")) {
+        unsigned long long cap = 0;
+        if (std::fscanf(f, "%llu", &cap) == 1 && cap > 0) bytes = std::min<std::uint64_t>(bytes, cap);
+        std::fclose(f);
+      }
+      if (group.empty()) break;
+      const std::size_t slash = group.rfind('/');
+      group.resize(slash == std::string::npos ? 0 : slash);
+    }
+  };
+  if (std::FILE* f = std::fopen("/proc/self/cgroup", "r")) {
+    char line[4096];
+    while (std::fgets(line, sizeof line, f)) {
+      std::string_view text(line);
+      const auto path_after = [&](std::string_view prefix_end) {
+        std::string group(text.substr(text.find(prefix_end) + prefix_end.size()));
+        while (!group.empty() && (group.back() == '\n' || group.back() == '/')) group.pop_back();
+        return group;
+      };
+      if (text.starts_with("0::")) cap_along(path_after("0::"), "/sys/fs/cgroup", "memory.max");
+      else if (text.find(":memory:") != std::string_view::npos)
+        cap_along(path_after(":memory:"), "/sys/fs/cgroup/memory", "memory.limit_in_bytes");
+    }
     std::fclose(f);
   }
   return bytes;
