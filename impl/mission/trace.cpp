@@ -7,6 +7,9 @@
 #include <optional>
 #include <istream>
 #include <memory>
+#include <initializer_list>
+#include <string_view>
+#include <map>
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 #include <ostream>
@@ -80,6 +83,15 @@ class Record {
     return *it;
   }
   bool has(const char* key) const { return j_.contains(key); }
+  // A field not among `known` is a mistake (a misspelt key would otherwise be read as absent).
+  void only(std::initializer_list<std::string_view> known) const {
+    for (const auto& [key, value] : j_.items())
+      if (std::find(known.begin(), known.end(), key) == known.end()) {
+        std::string list;
+        for (const std::string_view k : known) list += (list.empty() ? "" : ", ") + std::string(k);
+        throw InputError(where_ + ": " + key, "unknown field (a " + j_.value("type", std::string("record")) + " record has " + list + ")");
+      }
+  }
   double number(const char* key) const { return number_at(at(key), key); }
   std::string text(const char* key) const {
     const Json& v = at(key);
@@ -141,7 +153,9 @@ MissionTrace read_trace(std::istream& in, const std::string& source) {
   std::string line;
   std::size_t n = 0;
   bool header = false;
-  double last_t = 0;   // of the last event or step
+  double last_t = 0;                     // of the last event or step
+  std::optional<double> last_step_t;     // steps are one simulation step apart: strictly later
+  std::map<std::string, double> idle_from;   // a robot's intervals follow one another
   while (std::getline(in, line)) {
     ++n;
     if (line.empty()) continue;
@@ -166,11 +180,13 @@ MissionTrace read_trace(std::istream& in, const std::string& source) {
       return name;
     };
     if (type == "header") {
+      rec.only({"type", "format", "version", "mission", "fsm", "initial_state", "robots", "body", "dt"});
       if (header) throw InputError(where, "a second header");
       header = true;
       t.initial_state = rec.text("initial_state");
       t.robots = rec.texts("robots");
     } else if (type == "event") {
+      rec.only({"type", "t", "event", "robot", "kind", "state"});
       TraceEntry e;
       e.line = n;
       e.is_event = true;
@@ -181,9 +197,13 @@ MissionTrace read_trace(std::istream& in, const std::string& source) {
       t.entries.push_back(std::move(e));
     } else if (type == "step") {
       if (t.robots.empty()) throw InputError(where, "a step record before the header (or a header naming no robots)");
+      rec.only({"type", "t", "state", "positions", "blocked", "yielded"});
       TraceEntry e;
       e.line = n;
       e.step.time_s = time("t", true);
+      if (last_step_t && !(e.step.time_s > *last_step_t))
+        throw InputError(where + ": t", fmt::format("expected a time after the last step's ({}), got {}", *last_step_t, e.step.time_s));
+      last_step_t = e.step.time_s;
       e.step.state = rec.text("state");
       for (const auto& p : rec.points("positions")) e.step.positions.push_back({p[0], p[1]});
       e.step.blocked = rec.flags("blocked");
@@ -198,11 +218,19 @@ MissionTrace read_trace(std::istream& in, const std::string& source) {
       t.entries.push_back(std::move(e));
     } else if (type == "interval") {
       swarmcheck::mission::IntervalRecord i;
+      rec.only({"type", "robot", "activity", "from", "to"});
       i.robot = robot("robot");
       i.activity = json_io::enum_from_string<swarmcheck::mission::Activity>(rec.text("activity"), where + ": activity");
       i.from_s = time("from", false);
       i.to_s = time("to", false);
       if (i.to_s < i.from_s) throw InputError(where + ": to", fmt::format("expected a time >= from ({}), got {}", i.from_s, i.to_s));
+      const auto [previous, first] = idle_from.try_emplace(i.robot, i.to_s);
+      if (!first) {
+        if (i.from_s < previous->second)
+          throw InputError(where + ": from", fmt::format("expected a time >= {} (where robot {}'s last interval ended), got {}",
+                                                         previous->second, i.robot, i.from_s));
+        previous->second = i.to_s;
+      }
       t.intervals.push_back(std::move(i));
     } else {
       throw InputError(where, "unknown record type \"" + type + "\"");

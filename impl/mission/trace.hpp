@@ -49,9 +49,10 @@ struct MissionTrace {
 };
 
 // Reads a trace; a malformed line is an InputError at "source:line". Beyond each record's
-// fields: the header comes first; times are finite and >= 0; events and steps are in time order
-// (never earlier than the record before); an event names a robot of the header; an interval
-// names one too and does not end before it starts.
+// fields (no field it does not know): the header comes first; times are finite and >= 0; events
+// and steps are in time order (never earlier than the record before; a step strictly after the
+// last step); an event names a robot of the header; an interval names one too, does not end
+// before it starts, nor start before that robot's last interval ended.
 MissionTrace read_trace(std::istream& in, const std::string& source);
 
 // The trace is a run of the mission `m`: its robots, in order, and initial state; its events,

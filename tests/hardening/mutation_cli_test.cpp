@@ -140,6 +140,30 @@ TEST(MutationCli, AMutatedTraceGivesStatus0Or1Or2WithOneMessageNamingIt) {
   h.report();
 }
 
+TEST(MutationCli, AMutatedMissionTraceGivesStatus0Or2WithOneMessageNamingItAndLeavesTheViewOutputWhole) {
+  MutationHarness h(test_name());
+  const std::string mission = kSource + "/scenarios/thesis/thesis-mission.json";
+  const fs::path made = h.dir() / "made.jsonl";
+  const Outcome o = run_swarmcheck({"mission", "run", mission, "--body", "kinematic", "--max-time", "3", "--trace", made.string()},
+                                   std::chrono::seconds(20));   // 3 s of the mission: not completed (status 1)
+  ASSERT_EQ(o.status, 1) << o.err;
+  const std::string text = read_bytes(made);
+  fs::remove(made);
+  // The header needs its type, initial state and robots (the mission comes from --mission); every
+  // other record every field but a step's "yielded" (traces from before the yield rule lack it).
+  const JsonKind trace{"mission trace", true, [](std::size_t root, const std::string& path) {
+                         if (root == 0) return path == "type" || path == "initial_state" || path == "robots";
+                         return path != "yielded";
+                       }};
+  const std::vector<Command> view{{"view --mission M -o OUT",
+                                   [mission](const std::string& in, const std::string& out) {
+                                     return std::vector<std::string>{"view", in, "--mission", mission, "-o", out};
+                                   },
+                                   true}};
+  h.check("m.jsonl", text, json_mutants(text, trace, count_for(120), seed_for(0x5eed0005)), view);
+  h.report();
+}
+
 // Not mutations but the same contract: files that are not regular text files.
 TEST(MutationCli, AnEmptyMissingDirectoryDeviceOrFifoInputIsStatus2WithinSecondsNotAHangOrACrash) {
   MutationHarness h(test_name());

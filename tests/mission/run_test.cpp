@@ -193,6 +193,13 @@ TEST(MissionRun, AMalformedTraceRecordIsRefusedWithItsLineAndJsonPath) {
   const std::string later = R"({"type":"step","t":0.5,"state":"s1","positions":[[0,0],[1,1]],"blocked":[false,false]})";
   EXPECT_EQ(in_order(later, step), "t.jsonl:3: t: expected records in time order, got 0 after 0.5");
   EXPECT_EQ(in_order(step, later), "(no error)");
+  EXPECT_EQ(in_order(step, step), "t.jsonl:3: t: expected a time after the last step's (0), got 0");
+  const std::string busy = R"({"type":"interval","robot":"A","activity":"busy","from":0,"to":2})";
+  EXPECT_EQ(in_order(busy, R"({"type":"interval","robot":"A","activity":"busy","from":1,"to":3})"),
+            "t.jsonl:3: from: expected a time >= 2 (where robot A's last interval ended), got 1");
+  EXPECT_EQ(in_order(busy, R"({"type":"interval","robot":"B","activity":"busy","from":1,"to":3})"), "(no error)");
+  EXPECT_EQ(error_of(R"({"type":"step","t":0.0,"state":"s1","positions":[[0,0],[1,1]],"blocked":[false,false],"blockd":[]})"),
+            "t.jsonl:2: blockd: unknown field (a step record has type, t, state, positions, blocked, yielded)");
   std::istringstream headless(step + "\n");
   EXPECT_THROW(swarmcheck::impl::mission::read_trace(headless, "t.jsonl"), swarmcheck::InputError);
 }
