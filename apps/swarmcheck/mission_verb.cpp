@@ -12,6 +12,7 @@
 
 #include <cmath>
 #include <memory>
+#include <optional>
 #include <nlohmann/json.hpp>
 
 #include "apps/swarmcheck/verb.hpp"
@@ -110,6 +111,8 @@ int run_run(const RunOptions& o) {
   impl::io::refuse_output_that_is_an_input(o.trace, inputs);
   impl::io::refuse_output_that_is_an_input(o.svg, inputs);
   impl::io::refuse_output_that_is_another_output(o.svg, "--svg", o.trace, "--trace");
+  for (const std::string& out : {o.trace, o.svg})   // before the run, not after the trace is written
+    if (!out.empty()) impl::io::check_output_path(out);
   const sm::Mission m = sm::load_mission(o.file);
   if (!(o.dt > 0) || !std::isfinite(o.dt)) throw InputError("--dt", "expected a step in seconds > 0");
   if (!(o.max_time > 0) || !std::isfinite(o.max_time)) throw InputError("--max-time", "expected a time in seconds > 0");
@@ -134,10 +137,15 @@ int run_run(const RunOptions& o) {
   if (!o.trace.empty()) trace = std::make_unique<sm::TraceFile>(o.trace, m, ro);
   views::MissionPathRecorder paths(m.robots.size(), trace.get());
   const sm::RunResult r = sm::run_mission(m, ro, &paths);
+  // Both outputs written, then both committed: a picture that cannot be written leaves the old trace.
+  std::optional<impl::io::AtomicFile> svg;
+  if (!o.svg.empty()) {
+    svg.emplace(o.svg);
+    svg->stream() << views::mission_svg({&m, paths.paths(), "mission " + o.file,
+                                         (r.completed ? "mission complete" : r.reason) + fmt::format(" at t={:.2f} s in state {}", r.time_s, r.final_state)});
+  }
   if (trace) trace->commit();
-  if (!o.svg.empty())
-    impl::io::write_file_atomically(o.svg, views::mission_svg({&m, paths.paths(), "mission " + o.file,
-                                                         (r.completed ? "mission complete" : r.reason) + fmt::format(" at t={:.2f} s in state {}", r.time_s, r.final_state)}));
+  if (svg) svg->commit();
   std::vector<std::string> events;
   for (const auto& e : r.events) events.push_back(e.event);
   if (o.json) {

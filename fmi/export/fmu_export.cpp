@@ -129,6 +129,10 @@ void write_intocps(const ex::Scenario& s, Handshake handshake, const std::string
   std::filesystem::create_directories(dir, ec);
   if (ec) throw InputError(dir, "cannot create the folder: " + ec.message());
   const auto in = [&](const std::string& name) { return (std::filesystem::path(dir) / name).string(); };
+  // Every output must be writable before any is written (a folder named coe.json refused after the
+  // FMUs were replaced left a folder half old, half new).
+  for (const char* name : {"Environment.fmu", "Controller.fmu", "Body.fmu", "coe.json", "multimodel.json"})
+    io::check_output_path(in(name));
   // Each archive is whole or absent; the multi-model goes last, so a folder with it is complete.
   write_fmu(fmu_setup(Kind::environment, s), in("Environment.fmu"));
   write_fmu(fmu_setup(Kind::controller, s), in("Controller.fmu"));

@@ -76,11 +76,13 @@ void unpack(const std::string& fmu, const std::string& dir, std::uint64_t max_by
     if (rel.is_absolute() || name.empty() || *rel.begin() == "..")
       throw InputError(fmu, "archive entry '" + name + "' would be written outside the FMU's folder");
     const std::filesystem::path target = std::filesystem::path(dir) / rel;
-    if (name.back() == '/') {
-      std::filesystem::create_directories(target);
-      continue;
-    }
-    std::filesystem::create_directories(target.parent_path());
+    // An entry under a path an earlier entry made a file ('binaries', then 'binaries/linux64/x'),
+    // or a file where an earlier entry made a folder: an archive no FMU tool writes.
+    std::error_code ec;
+    std::filesystem::create_directories(name.back() == '/' ? target : target.parent_path(), ec);
+    if (ec || (name.back() != '/' && std::filesystem::is_directory(target)))
+      throw InputError(fmu, "archive entry '" + name + "' clashes with an earlier entry (a file and a folder of one name)");
+    if (name.back() == '/') continue;
     zip_file_t* in = zip_fopen_index(archive, static_cast<zip_uint64_t>(k), 0);
     if (!in) throw InputError(fmu, "cannot read archive entry '" + name + "': " + zip_strerror(archive));
     const auto fclose = std::unique_ptr<zip_file_t, int (*)(zip_file_t*)>(in, zip_fclose);
@@ -127,8 +129,10 @@ ModelDescription read_model_description(const std::string& xml, const std::strin
       xmlFreeDoc);
   if (!doc) {
     const xmlError* e = xmlGetLastError();
+    std::string why = e && e->message ? e->message : "";
+    while (!why.empty() && (why.back() == '\n' || why.back() == ' ')) why.pop_back();   // libxml2 ends it with a newline
     throw InputError(file + (e ? ":" + std::to_string(e->line) : ""),
-                     "modelDescription.xml is not well-formed XML" + (e && e->message ? std::string(": ") + e->message : ""));
+                     "modelDescription.xml is not well-formed XML" + (why.empty() ? "" : ": " + why));
   }
   xmlNode* root = xmlDocGetRootElement(doc.get());
   if (!root || !named(root, "fmiModelDescription")) throw InputError(file, "expected a root element fmiModelDescription");
@@ -176,15 +180,18 @@ ModelDescription read_model_description(const std::string& xml, const std::strin
 }
 
 FmuLibrary::FmuLibrary(const std::string& fmu_path, std::uint64_t max_unpacked_bytes) : path_(fmu_path) {
-  if (!std::filesystem::is_regular_file(fmu_path)) throw InputError(fmu_path, "no such FMU file");
+  if (!std::filesystem::exists(fmu_path)) throw InputError(fmu_path, "no such FMU file");
+  if (!std::filesystem::is_regular_file(fmu_path)) throw InputError(fmu_path, "expected an FMU file, got a folder or a device");
   const char* tmp = std::getenv("TMPDIR");
   std::string pattern = std::string(tmp && *tmp ? tmp : "/tmp") + "/swarmcheck-fmu-XXXXXX";
   if (!mkdtemp(pattern.data())) throw InputError(pattern, "cannot create a temporary folder to unpack the FMU");
   dir_ = pattern;
   try {
     unpack(fmu_path, dir_, max_unpacked_bytes);
+    if (!std::filesystem::is_regular_file(dir_ + "/modelDescription.xml"))
+      throw InputError(fmu_path, "the archive has no modelDescription.xml file at its top");
     std::ifstream in(dir_ + "/modelDescription.xml", std::ios::binary);
-    if (!in) throw InputError(fmu_path, "the archive has no modelDescription.xml");
+    if (!in) throw InputError(fmu_path, "cannot read its modelDescription.xml");
     const std::string xml((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     description_ = read_model_description(xml, fmu_path + "!modelDescription.xml");
     const std::string so = dir_ + "/binaries/linux64/" + description_.model_identifier + ".so";

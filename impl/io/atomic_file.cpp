@@ -100,7 +100,15 @@ void AtomicFile::commit() {
   release_temp_file(temp_slot_);
 }
 
-void check_output_path(const std::string& path) { (void)output_target(path); }
+void check_output_path(const std::string& path) {
+  const fs::path target = output_target(path);
+  const fs::path folder = target.has_parent_path() ? target.parent_path() : fs::path(".");
+  std::error_code ec;
+  if (!fs::is_directory(folder, ec))
+    throw InputError(path, "cannot write this file: its folder " + folder.string() + " does not exist");
+  if (::access(folder.c_str(), W_OK | X_OK) != 0)
+    throw InputError(path, "cannot write this file: its folder " + folder.string() + " may not be written");
+}
 
 void write_file_atomically(const std::string& path, const std::string& content) {
   AtomicFile f(path);

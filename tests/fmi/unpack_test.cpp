@@ -9,6 +9,8 @@
 #include <cstring>
 #include <filesystem>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "fmi/master/fmu_library.hpp"
 #include "spec/util/input_error.hpp"
@@ -98,6 +100,51 @@ TEST(FmuUnpack, AnArchiveThatUnpacksToMoreThanTheLimitIsRefusedBeforeWritingAndL
   EXPECT_EQ(temp_folders(tmp), 0U);
   ::unsetenv("TMPDIR");
   fs::remove(fmu);
+}
+
+// An archive of the given entries (name, text); a name ending in '/' is a folder.
+std::string zip_of(const fs::path& fmu, const std::vector<std::pair<std::string, std::string>>& entries) {
+  int error = 0;
+  zip_t* za = zip_open(fmu.c_str(), ZIP_CREATE | ZIP_TRUNCATE, &error);
+  if (!za) return "";
+  for (const auto& [name, text] : entries) {
+    if (name.back() == '/') zip_dir_add(za, name.substr(0, name.size() - 1).c_str(), ZIP_FL_ENC_UTF_8);
+    else zip_file_add(za, name.c_str(), zip_source_buffer(za, text.data(), text.size(), 0), ZIP_FL_OVERWRITE);
+  }
+  return zip_close(za) == 0 ? fmu.string() : "";
+}
+
+std::string load_error(const std::string& fmu) {
+  try {
+    swarmcheck::fmi::master::FmuLibrary lib(fmu);
+  } catch (const swarmcheck::InputError& e) {
+    return e.what();
+  }
+  return "(loaded)";
+}
+
+// Archives no FMU tool writes are bad input (status 2) naming the FMU, never an internal error:
+// a file where a folder is needed, modelDescription.xml a folder, XML errors on one line.
+TEST(FmuUnpack, ArchivesWithClashingEntriesOrAFolderForTheModelDescriptionAreInputErrors) {
+  const fs::path dir = swarmcheck::testing::fmi_scratch("unpack-clash");
+  const fs::path tmp = dir / "tmp";
+  fs::create_directories(tmp);
+  ::setenv("TMPDIR", tmp.c_str(), 1);
+  const std::string xml = "<fmiModelDescription/>";
+  const std::string clash = zip_of(dir / "clash.fmu", {{"modelDescription.xml", xml}, {"binaries", "x"}, {"binaries/linux64/m.so", "y"}});
+  ASSERT_FALSE(clash.empty());
+  EXPECT_EQ(load_error(clash), clash + ": archive entry 'binaries/linux64/m.so' clashes with an earlier entry (a file and a folder of one name)");
+  const std::string folder = zip_of(dir / "folder.fmu", {{"modelDescription.xml/", ""}, {"modelDescription.xml/x", "y"}});
+  ASSERT_FALSE(folder.empty());
+  EXPECT_EQ(load_error(folder), folder + ": the archive has no modelDescription.xml file at its top");
+  const std::string broken = zip_of(dir / "broken.fmu", {{"modelDescription.xml", "<fmiModelDescription><a>"}});
+  ASSERT_FALSE(broken.empty());
+  const std::string message = load_error(broken);
+  EXPECT_NE(message.find("modelDescription.xml is not well-formed XML: "), std::string::npos) << message;
+  EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+  EXPECT_EQ(load_error(dir.string()), dir.string() + ": expected an FMU file, got a folder or a device");
+  EXPECT_EQ(temp_folders(tmp), 0U);
+  ::unsetenv("TMPDIR");
 }
 
 }  // namespace

@@ -299,3 +299,24 @@ TEST(Hardening, ANulByteInAJsonInputIsNamedWhereItIs) {
   EXPECT_EQ(r2.status, 2);
   EXPECT_EQ(r2.out, "swarmcheck: error: " + inside + ":2:10: not valid JSON: a NUL byte (a binary file?)\n");
 }
+
+// One output that cannot be written (a folder where a file goes, a folder that does not exist)
+// is found before any other output is replaced: the others keep their old content.
+TEST(Hardening, AnOutputThatCannotBeWrittenIsFoundBeforeAnyOtherOutputIsReplaced) {
+  const fs::path d = scratch() / "outputs-first";
+  fs::create_directories(d);
+  const std::string trace = write(d / "t.jsonl", "OLD");
+  const auto mission = run_binary(kBin, "mission run " + kSource + "/scenarios/examples/walls.json --body kinematic --trace " +
+                                            trace + " --svg " + (d / "missing" / "x.svg").string());
+  EXPECT_EQ(mission.status, 2) << mission.out;
+  EXPECT_NE(mission.out.find("x.svg: cannot write this file: its folder"), std::string::npos) << mission.out;
+  EXPECT_EQ(read(trace), "OLD");
+  const fs::path ic = d / "ic";
+  fs::create_directories(ic / "coe.json");
+  const std::string fmu = write(ic / "Environment.fmu", "OLD");
+  const auto exported = run_binary(kBin, "fmu export --intocps " + ic.string());
+  EXPECT_EQ(exported.status, 2) << exported.out;
+  EXPECT_NE(exported.out.find("coe.json: is a folder; expected a file path for the output"), std::string::npos) << exported.out;
+  EXPECT_EQ(read(fmu), "OLD");
+  EXPECT_FALSE(fs::exists(ic / "Body.fmu"));
+}
