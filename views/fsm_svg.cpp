@@ -1,17 +1,28 @@
 #include "views/fsm_svg.hpp"
 
+#include <fcntl.h>
+#include <fmt/format.h>
+#include <signal.h>
+#include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <cerrno>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <thread>
+#include <vector>
 
 #include "spec/util/demand.hpp"
 #include "impl/io/interrupt.hpp"
 #include "spec/util/input_error.hpp"
+
+extern char** environ;   // POSIX: the environment dot inherits
 
 namespace swarmcheck::views {
 namespace {
@@ -90,24 +101,50 @@ std::string styled_dot(const swarmcheck::supervisor::Automaton& a) {
   return out + "}\n";
 }
 
-std::string fsm_svg(const swarmcheck::supervisor::Automaton& a) {
+std::optional<std::string> fsm_svg_within(const swarmcheck::supervisor::Automaton& a, std::chrono::milliseconds limit) {
   const std::string dot = find_dot();
   if (dot.empty())
     throw InputError("graphviz", "the `dot` program is not installed (Debian: apt-get install graphviz); "
                                  "it lays out automata for `view` and `fsm export --to svg`");
-  TempFile in, out;
+  TempFile in, out, messages;
   {
     std::ofstream f(in.path);
     f << styled_dot(a);
   }
-  const std::string cmd = "'" + dot + "' -Tsvg -o '" + out.path + "' '" + in.path + "' 2>&1";
-  std::FILE* p = ::popen(cmd.c_str(), "r");
-  if (!p) throw InputError("graphviz", "cannot start dot");
-  std::string messages;
-  char buf[512];
-  while (std::fgets(buf, sizeof buf, p)) messages += buf;
-  const int status = ::pclose(p);
-  if (status != 0) throw InputError("graphviz", "dot failed: " + messages);
+  // dot's own output and errors go to a file; the program itself is waited for with a deadline
+  // (a dense automaton under the transition cap can take dot hours; a server's worker must not).
+  posix_spawn_file_actions_t files;
+  posix_spawn_file_actions_init(&files);
+  posix_spawn_file_actions_addopen(&files, STDOUT_FILENO, messages.path.c_str(), O_WRONLY | O_TRUNC, 0600);
+  posix_spawn_file_actions_adddup2(&files, STDOUT_FILENO, STDERR_FILENO);
+  std::vector<std::string> args = {dot, "-Tsvg", "-o", out.path, in.path};
+  std::vector<char*> argv;
+  for (std::string& arg : args) argv.push_back(arg.data());
+  argv.push_back(nullptr);
+  pid_t pid = 0;
+  const int spawned = posix_spawn(&pid, dot.c_str(), &files, nullptr, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&files);
+  if (spawned != 0) throw InputError("graphviz", std::string("cannot start dot: ") + std::strerror(spawned));
+  const auto deadline = std::chrono::steady_clock::now() + limit;
+  int status = 0;
+  for (auto pause = std::chrono::microseconds(200);; pause = std::min(pause * 2, std::chrono::microseconds(20000))) {
+    const pid_t done = ::waitpid(pid, &status, WNOHANG);
+    if (done == pid) break;
+    if (done < 0 && errno != EINTR) throw InputError("graphviz", std::string("lost dot: ") + std::strerror(errno));
+    if (std::chrono::steady_clock::now() >= deadline) {
+      ::kill(pid, SIGKILL);
+      while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+      }
+      return std::nullopt;
+    }
+    std::this_thread::sleep_for(pause);
+  }
+  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
+    std::ifstream m(messages.path);
+    std::stringstream text;
+    text << m.rdbuf();
+    throw InputError("graphviz", "dot failed: " + text.str());
+  }
   std::ifstream svg(out.path);
   std::stringstream text;
   text << svg.rdbuf();
@@ -115,6 +152,14 @@ std::string fsm_svg(const swarmcheck::supervisor::Automaton& a) {
   const std::size_t at = s.find("<svg");   // drop the XML prolog and DOCTYPE
   SWARM_DEMAND(at != std::string::npos);
   return s.substr(at);
+}
+
+std::string fsm_svg(const swarmcheck::supervisor::Automaton& a) {
+  if (auto svg = fsm_svg_within(a, kLayoutTimeMax)) return *svg;
+  throw InputError("graphviz", fmt::format("dot did not lay out the automaton ({} states, {} transitions) within {} s; "
+                                           "`view` lists its states instead", a.states.size(),
+                                           swarmcheck::supervisor::transition_count(a),
+                                           std::chrono::duration_cast<std::chrono::seconds>(kLayoutTimeMax).count()));
 }
 
 }  // namespace swarmcheck::views

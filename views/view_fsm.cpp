@@ -25,8 +25,14 @@ Page fsm_page(const std::string& text, const std::string& path) {
     events.push_back({{"name", e}, {"controllable", attr.controllable}, {"observable", attr.observable}});
   json_io::Json data = {{"kind", "fsm"}, {"file", path}, {"states", states}, {"events", events},
                         {"transitions", transitions}, {"listed_transitions", std::min(listed, kListedTransitionsMax)}};
-  if (transitions <= kLayoutTransitionsMax) {
-    data["svg"] = fsm_svg(a);
+  std::optional<std::string> svg;
+  if (transitions <= kLayoutTransitionsMax && (svg = fsm_svg_within(a, kLayoutTimeMax))) {
+    data["svg"] = *svg;
+  } else if (transitions <= kLayoutTransitionsMax) {
+    data["svg"] = nullptr;
+    data["no_layout"] = "dot did not lay out its " + std::to_string(transitions) + " transitions within " +
+                        std::to_string(std::chrono::duration_cast<std::chrono::seconds>(kLayoutTimeMax).count()) +
+                        " s: search the list";
   } else {
     data["svg"] = nullptr;
     data["no_layout"] = "the automaton has " + std::to_string(transitions) + " transitions, more than the " +

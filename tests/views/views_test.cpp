@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <bit>
+#include <chrono>
 #include <filesystem>
 #include <fstream>
 
@@ -11,6 +12,7 @@
 #include "spec/exploration/trace.hpp"
 #include "spec/exploration/trace_field.hpp"
 #include "views/exploration_svg.hpp"
+#include "views/fsm_svg.hpp"
 #include "views/page.hpp"
 #include "views/run_recorder.hpp"
 #include "views/schema.hpp"
@@ -147,4 +149,26 @@ TEST(ViewReaders, BadFilesGetOneMessageNamingFileAndLine) {
   EXPECT_EQ(msg("badline", header + "\n{\n").rfind(":2:2: not valid JSON: syntax error", 0), 0U);
   EXPECT_NE(msg("fsm", "2\n\ns1 0 1\na s9 c o\n").find(":"), std::string::npos);   // the .fsm reader's message
   EXPECT_EQ(message_of([&] { views::view_page("/nonexistent/t.jsonl", o); }), "/nonexistent/t.jsonl: cannot open the file to view: no such file");
+}
+
+// dot gets a time limit: a dense automaton under the transition cap kept it busy for hours (and a
+// server's worker with it). Past the limit dot is killed and the layout is nullopt; within it, a
+// small automaton is laid out.
+TEST(FsmSvg, DotIsKilledPastItsTimeLimitAndASmallAutomatonIsStillLaidOut) {
+  if (!swarmcheck::views::dot_available()) GTEST_SKIP() << "graphviz's dot is not installed";
+  swarmcheck::supervisor::Automaton dense;
+  const int n = 63;
+  for (int i = 0; i < n; ++i) dense.states.push_back("s" + std::to_string(i));
+  for (int j = 0; j < n; ++j) dense.events["e" + std::to_string(j)] = {};
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) dense.delta["s" + std::to_string(i)]["e" + std::to_string(j)] = "s" + std::to_string((i * 7 + j * 13) % n);
+  // (Not killed, this would wait for dot for hours: the test's own timeout would fail it.)
+  EXPECT_FALSE(swarmcheck::views::fsm_svg_within(dense, std::chrono::milliseconds(300)).has_value());
+  swarmcheck::supervisor::Automaton small;
+  small.states = {"a", "b"};
+  small.events["go"] = {};
+  small.delta["a"]["go"] = "b";
+  const auto svg = swarmcheck::views::fsm_svg_within(small, std::chrono::seconds(60));
+  ASSERT_TRUE(svg.has_value());
+  EXPECT_EQ(svg->rfind("<svg", 0), 0U);
 }
