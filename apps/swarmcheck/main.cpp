@@ -30,9 +30,10 @@ int main(int argc, char** argv) {
       "internal error (a bug: please report it); 130 / 143 / 129 interrupted by SIGINT / SIGTERM / "
       "SIGHUP (outputs left as they were; serve exits 0).");
   app.set_version_flag("--version", "swarmcheck 0.1.0");
-  // Usage errors read like every other error: one line, the same prefix.
-  app.failure_message([](const CLI::App*, const CLI::Error& e) {
-    return std::string("swarmcheck: error: ") + e.what() + "\nRun with --help for more information.\n";
+  // Usage errors read like every other error: one line, the same prefix, and where help is.
+  std::string path = "swarmcheck";   // the verbs named on the command line (below)
+  app.failure_message([&path](const CLI::App*, const CLI::Error& e) {
+    return std::string("swarmcheck: error: ") + e.what() + " (" + path + " --help shows the usage)\n";
   });
   int exit_code = 0;
   swarmcheck::cli::add_run_verb(app, exit_code);
@@ -50,7 +51,6 @@ int main(int argc, char** argv) {
   // A verb that is not one (CLI11 would only say "A subcommand is required"): named, with the
   // verbs there are at that level.
   CLI::App* level = &app;
-  std::string path = "swarmcheck";
   for (int i = 1; i < argc && argv[i][0] != '-'; ++i) {
     const std::vector<CLI::App*> verbs = level->get_subcommands([](CLI::App*) { return true; });
     if (verbs.empty()) break;   // a verb's own arguments
@@ -61,7 +61,7 @@ int main(int argc, char** argv) {
       names += (names.empty() ? "" : ", ") + v->get_name();
     }
     if (!next) {
-      std::fprintf(stderr, "swarmcheck: error: unknown verb '%s' for %s (the verbs: %s)\nRun with --help for more information.\n",
+      std::fprintf(stderr, "swarmcheck: error: unknown verb '%s' for %s (the verbs: %s)\n",
                    swarmcheck::cli::printable_message(argv[i]).c_str(), path.c_str(), names.c_str());
       return 2;
     }
