@@ -27,6 +27,13 @@ TEST(FsmRead, EmptyFile) {
   EXPECT_EQ(error_of("\n\n  \n"), "t.fsm:4:1: empty file: expected the number of states");
 }
 
+// A UTF-8 byte order mark (editors on Windows write one) is skipped, as JSON inputs skip it.
+TEST(FsmRead, AByteOrderMarkIsSkippedAndTheAutomatonIsTheSame) {
+  const std::string text = "2\n\ns1 0 1\ngo s2 c o\n\ns2 1 0\n";
+  EXPECT_EQ(read_fsm("\xEF\xBB\xBF" + text, "t.fsm"), read_fsm(text, "t.fsm"));
+  EXPECT_EQ(error_of("\xEF\xBB\xBFx\n"), "t.fsm:1:1: expected the number of states (a non-negative integer), got 'x'");
+}
+
 TEST(FsmRead, BadStateCount) {
   EXPECT_EQ(error_of("x\n"),
             "t.fsm:1:1: expected the number of states (a non-negative integer), got 'x'");
