@@ -273,6 +273,17 @@ GridWorld grid_of_size(const Point& size_m, double res) {
   return w;
 }
 
+// Every point on the line through the first point and the first point apart from it.
+bool collinear(const std::vector<Point>& poly) {
+  const Point& a = poly[0];
+  const auto other = std::find_if(poly.begin(), poly.end(), [&](const Point& p) { return p != a; });
+  if (other == poly.end()) return true;
+  const Point& b = *other;
+  return std::all_of(poly.begin(), poly.end(), [&](const Point& p) {
+    return (b[0] - a[0]) * (p[1] - a[1]) - (b[1] - a[1]) * (p[0] - a[0]) == 0.0;
+  });
+}
+
 // Rasterises the polygons of `list` ("obstacles" or "unknown_obstacles") onto `cells`.
 void add_polygons(const GridWorld& w, const std::vector<ObstacleDecl>& obstacles, const char* list,
                   std::vector<char>& cells_out, std::vector<std::vector<Point>>& polygons_out) {
@@ -283,7 +294,9 @@ void add_polygons(const GridWorld& w, const std::vector<ObstacleDecl>& obstacles
       throw InputError(path, fmt::format("expected a polygon of at least 3 points [x, y]; got {}",
                                          poly.size()));
     if (polygon_area2(poly) == 0.0)
-      throw InputError(path, "expected a polygon of non-zero area; its points are on one line");
+      throw InputError(path, collinear(poly) ? "expected a polygon of non-zero area; its points are on one line"
+                                             : "expected a polygon of non-zero area; its outline crosses itself so "
+                                               "that its parts cancel out (list the corners in order around it)");
     const std::vector<char> cells = polygon_cells(w, poly);
     for (std::size_t c = 0; c < cells.size(); ++c) cells_out[c] = cells_out[c] || cells[c];
     polygons_out.push_back(poly);

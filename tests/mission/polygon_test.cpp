@@ -104,6 +104,9 @@ TEST(MissionPolygon, BadPolygonsGetOneMessageAtTheirJsonPath) {
             "world.obstacles[0].polygon[2]: expected finite coordinates in metres, each within +-1e9");
   EXPECT_EQ(polygon_message([](Json& j) { j["world"]["obstacles"][2]["polygon"] = {{0, 0}, {1, 1}, {2, 2}}; }),
             "world.obstacles[2].polygon: expected a polygon of non-zero area; its points are on one line");
+  EXPECT_EQ(polygon_message([](Json& j) { j["world"]["obstacles"][2]["polygon"] = {{2, -5}, {4, -3}, {4, -5}, {2, -3}}; }),
+            "world.obstacles[2].polygon: expected a polygon of non-zero area; its outline crosses itself so that "
+            "its parts cancel out (list the corners in order around it)");   // a bow-tie
   EXPECT_EQ(polygon_message([](Json& j) { j["world"]["obstacles"][2]["polygon"] = {{-1, -1}, {1, -1}, {0, 0.2}}; }),
             "world.obstacles[2].polygon: the polygon's cells cover the start [0, 0] of robot A "
             "(radius 0.3 m), robots[0].start");
