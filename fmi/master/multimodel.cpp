@@ -1,6 +1,10 @@
 #include "fmi/master/multimodel.hpp"
 
+#include <fmt/format.h>
+
+#include <cctype>
 #include <cmath>
+#include <initializer_list>
 #include <filesystem>
 #include <unordered_map>
 
@@ -29,6 +33,31 @@ PortName port_name(const std::string& text, const std::string& file, const std::
   return PortName{text.substr(0, close + 1), text.substr(dot1 + 1, dot2 - dot1 - 1), text.substr(dot2 + 1)};
 }
 
+// INTO-CPS files carry many keys this master does not use (logging, live graphs, ...), so unknown
+// keys are allowed; but one a letter or a letter's case away from a key it reads is a misspelling
+// ("endtime" ran the default 10 s, "paramters" set nothing), and is refused.
+bool near_miss(const std::string& key, const std::string& known) {
+  if (key == known) return false;
+  const auto lower = [](std::string t) {
+    for (char& c : t) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return t;
+  };
+  const std::string a = lower(key), b = lower(known);
+  if (a == b) return true;
+  if (b.size() < 4 || (a.size() > b.size() ? a.size() - b.size() : b.size() - a.size()) > 1) return false;
+  // Levenshtein distance 1: one letter inserted, deleted or changed.
+  std::size_t i = 0;
+  while (i < a.size() && i < b.size() && a[i] == b[i]) ++i;
+  return a.substr(i + (a.size() >= b.size() ? 1 : 0)) == b.substr(i + (b.size() >= a.size() ? 1 : 0));
+}
+
+void refuse_misspellings(const Json& object, std::initializer_list<const char*> known, const std::string& where) {
+  for (const auto& [key, value] : object.items())
+    for (const char* k : known)
+      if (near_miss(key, k))
+        throw InputError(where + key, std::string("unknown key: did you mean \"") + k + "\"?");
+}
+
 }  // namespace
 
 MultiModel read_multimodel(const std::string& path) {
@@ -36,6 +65,7 @@ MultiModel read_multimodel(const std::string& path) {
   MultiModel mm;
   mm.file = path;
   if (!j.is_object()) throw InputError(path, "expected a JSON object (an INTO-CPS multi-model)");
+  refuse_misspellings(j, {"fmus", "connections", "parameters"}, path + ": ");
   if (!j.contains("fmus") || !j["fmus"].is_object() || j["fmus"].empty())
     throw InputError(path + ": fmus", "expected an object of \"{FMU}\": \"file.fmu\" (at least one)");
   const std::filesystem::path folder = std::filesystem::path(path).parent_path();
@@ -106,6 +136,11 @@ CoSimConfig read_config(const std::string& path) {
   if (path.empty()) return c;
   const Json j = parse_file(path, "co-simulation configuration");
   if (!j.is_object()) throw InputError(path, "expected a JSON object (an INTO-CPS co-simulation configuration)");
+  if (j.contains("fmus") && !j.contains("algorithm"))
+    throw InputError(path, "is a multi-model (it has \"fmus\"), not a co-simulation configuration (startTime, endTime, "
+                           "algorithm): give the multi-model first and this with --config only if it is one");
+  refuse_misspellings(j, {"startTime", "endTime", "algorithm"}, path + ": ");
+  if (j.contains("algorithm") && j["algorithm"].is_object()) refuse_misspellings(j["algorithm"], {"type", "size"}, path + ": algorithm.");
   const auto number = [&](const Json& v, const std::string& where) {
     if (!v.is_number() || !std::isfinite(v.get<double>())) throw InputError(path + ": " + where, "expected a finite number");
     return v.get<double>();
@@ -122,6 +157,9 @@ CoSimConfig read_config(const std::string& path) {
   if (!(c.step_s > 0)) throw InputError(path + ": algorithm.size", "expected a step size > 0");
   if (!(c.end_s >= c.start_s)) throw InputError(path + ": endTime", "expected endTime >= startTime");
   if ((c.end_s - c.start_s) / c.step_s > 1e9) throw InputError(path + ": endTime", "expected at most 10^9 steps");
+  if (c.end_s > c.start_s && c.step_s > c.end_s - c.start_s)
+    throw InputError(path + ": algorithm.size", fmt::format("expected a step of at most endTime - startTime ({} s): "
+                                                            "a step of {} s runs none", c.end_s - c.start_s, c.step_s));
   return c;
 }
 

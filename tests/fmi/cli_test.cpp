@@ -124,6 +124,12 @@ TEST(FmiCli, BadMultiModelsAreStatusTwoWithTheJsonPathAndLeaveNoTemporaryFolder)
     j["connections"]["{Body}.body1.robot_x"] = Json::array({"{Controller}.controller1.onDestinationOutput"});
     cases.push_back({"an output used as an input", "not an input", j});
   }
+  {
+    Json j = good;
+    j["paramters"] = j["parameters"];
+    j.erase("parameters");
+    cases.push_back({"a misspelt key", "paramters: unknown key: did you mean \"parameters\"?", j});
+  }
   for (std::size_t k = 0; k < cases.size(); ++k) {
     const std::string path = f.write(cases[k].mm, "bad" + std::to_string(k) + ".json");
     const auto r = f.cosim(path + " --config " + (f.dir / "mm" / "coe.json").string());
@@ -144,6 +150,19 @@ TEST(FmiCli, BadMultiModelsAreStatusTwoWithTheJsonPathAndLeaveNoTemporaryFolder)
   r = f.cosim((f.dir / "mm" / "multimodel.json").string() + " --config " + (f.dir / "coe-bad.json").string());
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.out.find("algorithm.type: expected \"fixed-step\""), std::string::npos) << r.out;
+  // Configurations that would run something else than asked: a misspelt end (the default 10 s
+  // ran), a step longer than the run (no step ran), the multi-model given as the configuration.
+  const std::string mm = (f.dir / "mm" / "multimodel.json").string();
+  for (const auto& [config, expected] : std::vector<std::pair<std::string, std::string>>{
+           {R"({"endtime": 0.5, "algorithm": {"type": "fixed-step", "size": 0.1}})", "endtime: unknown key: did you mean \"endTime\"?"},
+           {R"({"endTime": 0.5, "algorithm": {"type": "fixed-step", "sizee": 0.1, "size": 0.1}})", "algorithm.sizee: unknown key: did you mean \"size\"?"},
+           {R"({"endTime": 0.5, "algorithm": {"type": "fixed-step", "size": 1e308}})", "algorithm.size: expected a step of at most endTime - startTime (0.5 s)"},
+           {good.dump(), "is a multi-model (it has \"fmus\"), not a co-simulation configuration"}}) {
+    std::ofstream(f.dir / "coe-odd.json") << config;
+    r = f.cosim(mm + " --config " + (f.dir / "coe-odd.json").string());
+    EXPECT_EQ(r.status, 2) << r.out;
+    EXPECT_NE(r.out.find(expected), std::string::npos) << r.out;
+  }
   EXPECT_TRUE(f.tmp_empty());
 }
 
