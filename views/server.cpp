@@ -9,6 +9,7 @@
 
 #include <atomic>
 #include <chrono>
+#include <regex>
 #include <fmt/format.h>
 #include <map>
 #include <memory>
@@ -282,8 +283,24 @@ int serve(const ServeOptions& o, const std::function<void(int port)>& on_listeni
     res.status = 500;
     res.set_content("swarmcheck: internal error (please report): " + what + "\n", "text/plain");
   });
-  svr.set_error_handler([](const httplib::Request&, httplib::Response& res) {
-    if (res.body.empty()) res.set_content(fmt::format("swarmcheck: error: HTTP {}\n", res.status), "text/plain");
+  svr.set_error_handler([&o](const httplib::Request& req, httplib::Response& res) {
+    if (!res.body.empty()) return;
+    // A path with a route for another method: 405 (httplib says 404, or 400 for PUT and DELETE).
+    static const std::regex run_path(R"(/api/runs/[0-9a-f]{16}/(events|control))");
+    const bool known_path = req.path == "/" || req.path == "/editor" || req.path == "/api/schema" || req.path == "/api/view" ||
+                            req.path == "/api/validate" || req.path == "/api/runs" || std::regex_match(req.path, run_path);
+    if ((res.status == 400 || res.status == 404) && known_path && req.method != "GET" && req.method != "POST") res.status = 405;
+    std::string why;
+    if (res.status == 404 || res.status == 405)
+      why = fmt::format("no route {} {} (the routes: GET /, GET /editor, GET /api/schema, POST /api/view, POST /api/validate, "
+                        "POST /api/runs, GET /api/runs/ID/events, POST /api/runs/ID/control)", req.method, req.path);
+    else if (res.status == 413 && req.get_header_value("Content-Type").starts_with("application/x-www-form-urlencoded"))
+      // Debian's compiled cpp-httplib holds a form body (curl's default type for --data) to 8 KiB.
+      why = "a body sent as a form (application/x-www-form-urlencoded, curl's default for --data) may not exceed 8 KiB: "
+            "send it as JSON or text (curl -H 'Content-Type: application/json')";
+    else if (res.status == 413)
+      why = fmt::format("the request body is larger than {} bytes, the most a request may send", o.view_bytes_max);
+    res.set_content(fmt::format("swarmcheck: error: HTTP {}{}{}\n", res.status, why.empty() ? "" : ": ", why), "text/plain");
   });
   page_routes(svr, o);
   run_routes(svr, registry, o);

@@ -47,7 +47,13 @@ try {
   r = await fetch(`${base}/api/runs/0123456789abcdef/control`, { method: 'POST', body: '{' });
   check(r.status === 404, 'control of an unknown run: 404');
   r = await fetch(`${base}/no/such/page`);
-  check(r.status === 404, 'an unknown path: 404');
+  check(r.status === 404 && (await r.text()).includes('no route GET /no/such/page (the routes: GET /,'), 'an unknown path: 404 naming it and the routes');
+  r = await fetch(`${base}/api/validate`, { method: 'PUT', body: '{}' });
+  check(r.status === 405 && (await r.text()).includes('no route PUT /api/validate'), 'a method a route does not take: 405');
+  r = await fetch(`${base}/api/validate`, { method: 'POST', headers: { 'Content-Type': 'application/x-www-form-urlencoded' },
+                                             body: ' '.repeat(9000) + '{"map_size": 4, "robots": [[0.5, 0.5]]}' });
+  check(r.status === 413 && (await r.text()).includes("send it as JSON or text (curl -H 'Content-Type: application/json')"),
+        'a form body over the HTTP library\'s 8 KiB: 413 saying how to send it');
   for (const garbage of ['\x00\x01\x02 garbage\r\n\r\n', 'GET /' + 'a'.repeat(70000) + ' HTTP/1.1\r\n\r\n', 'POST /api/runs HTTP/1.1\r\nContent-Length: 99999999999999999999\r\n\r\n{', 'GET / HTTP/1.1\r\nHost']) {
     await new Promise((resolve) => {
       const s = net.connect(port, '127.0.0.1', () => { s.end(garbage); });
