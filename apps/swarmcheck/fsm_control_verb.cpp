@@ -133,6 +133,8 @@ int run_observable(const Options& o) {
 }
 
 int run_project(const Options& o) {
+  // Without -o the observer itself goes to standard output: a summary there too would mix them.
+  if (o.json && o.out.empty()) throw InputError("--json", "goes with -o FILE (without it the observer is printed instead)");
   const engines::Engine engine = engines::engine_named(o.engine);
   const sv::Automaton a = sv::read_fsm_file(o.file);
   const sv::Automaton obs = [&] {

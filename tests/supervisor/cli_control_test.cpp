@@ -162,6 +162,10 @@ TEST(FsmControlCli, ProjectWritesTheObserver) {
   ASSERT_EQ(w.status, 0) << w.err;
   EXPECT_EQ(nlohmann::json::parse(w.out)["erased_events"], nlohmann::json({"f"}));
   EXPECT_EQ(swarmcheck::impl::supervisor::read_fsm_file(out), obs);
+  // --json without -o: the observer would go where the summary goes; refused, not ignored.
+  const CliRun both = fsm_cli({"fsm", "project", plant, "--json"});
+  EXPECT_EQ(both.status, 2);
+  EXPECT_NE(both.err.find("--json: goes with -o FILE"), std::string::npos) << both.err;
 }
 
 }  // namespace
