@@ -30,6 +30,10 @@ PortName port_name(const std::string& text, const std::string& file, const std::
   if (text.empty() || text[0] != '{' || close == std::string::npos || dot1 != close + 1 || dot2 == std::string::npos ||
       dot2 == dot1 + 1 || dot2 + 1 >= text.size())
     throw InputError(file + ": " + where, "expected \"{FMU}.instance.variable\", got \"" + text + "\"");
+  // Names become columns of outputs.csv and words of messages: no control characters, no quotes or commas.
+  for (const unsigned char c : text)
+    if (c < 0x20 || c == 0x7f || c == '"' || c == ',')
+      throw InputError(file + ": " + where, "expected a name without control characters, quotes or commas");
   return PortName{text.substr(0, close + 1), text.substr(dot1 + 1, dot2 - dot1 - 1), text.substr(dot2 + 1)};
 }
 

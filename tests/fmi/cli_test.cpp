@@ -130,6 +130,11 @@ TEST(FmiCli, BadMultiModelsAreStatusTwoWithTheJsonPathAndLeaveNoTemporaryFolder)
     j.erase("parameters");
     cases.push_back({"a misspelt key", "paramters: unknown key: did you mean \"parameters\"?", j});
   }
+  {
+    Json j = good;
+    j["connections"]["{Body}.body1\n.robot_x"] = Json::array({"{Controller}.controller1.x"});
+    cases.push_back({"a newline in an instance name (a column of outputs.csv)", "expected a name without control characters", j});
+  }
   for (std::size_t k = 0; k < cases.size(); ++k) {
     const std::string path = f.write(cases[k].mm, "bad" + std::to_string(k) + ".json");
     const auto r = f.cosim(path + " --config " + (f.dir / "mm" / "coe.json").string());
