@@ -3,7 +3,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <set>
+#include <tuple>
+#include <unordered_map>
 
 #include "spec/mission/mission.hpp"
 #include "spec/mission/separation.hpp"
@@ -28,23 +31,32 @@ std::vector<std::string> names_of(const std::vector<T>& xs) {
   return out;
 }
 
+// Names to their index in a list. (The checks looked names up by scanning the lists: 200 000
+// regions, each with its entry event, took minutes.)
+using NameIndex = std::unordered_map<std::string, std::size_t>;
+
+// The index of each name; the first repeated name refused.
 template <class T>
-void check_unique(const std::vector<T>& xs, const std::string& list) {
+NameIndex unique_names(const std::vector<T>& xs, const std::string& list) {
+  NameIndex index;
   for (std::size_t i = 0; i < xs.size(); ++i)
-    for (std::size_t k = 0; k < i; ++k)
-      if (xs[i].name == xs[k].name)
-        throw InputError(fmt::format("{}[{}].name", list, i),
-                         fmt::format("\"{}\" is already the name of {}[{}]", xs[i].name, list, k));
+    if (const auto [at, fresh] = index.emplace(xs[i].name, i); !fresh)
+      throw InputError(fmt::format("{}[{}].name", list, i),
+                       fmt::format("\"{}\" is already the name of {}[{}]", xs[i].name, list, at->second));
+  return index;
 }
 
 template <class T>
-std::size_t resolve(const std::vector<T>& xs, const std::string& name, const std::string& path,
-                    const char* what) {
-  for (std::size_t i = 0; i < xs.size(); ++i)
-    if (xs[i].name == name) return i;
+std::size_t resolve(const std::vector<T>& xs, const NameIndex& index, const std::string& name,
+                    const std::string& path, const char* what) {
+  if (const auto it = index.find(name); it != index.end()) return it->second;
   throw InputError(path, fmt::format("no {} named \"{}\" ({}s: {})", what, name, what,
                                      list_names(names_of(xs))));
 }
+
+struct DeclNames {
+  NameIndex robots, tasks, regions;
+};
 
 std::string fmt_point(const Point& p) { return fmt::format("[{}, {}]", p[0], p[1]); }
 
@@ -67,19 +79,21 @@ void check_state(const supervisor::Automaton& fsm, const std::string& q, const s
     throw InputError(path, fmt::format("state \"{}\" is not in {}", q, fsm_name));
 }
 
-Meaning resolve_meaning(const std::string& event, const MeaningDecl& d, const MissionDecl& m) {
+Meaning resolve_meaning(const std::string& event, const MeaningDecl& d, const MissionDecl& m, const DeclNames& names) {
   const std::string path = "events." + event;
   if (d.task.has_value() == d.region.has_value())
     throw InputError(path, "expected exactly one of \"task\" (a task start) or \"region\" (a "
                            "region entry)");
-  const std::size_t robot = resolve(m.robots, d.robot, path + ".robot", "robot");
+  const std::size_t robot = resolve(m.robots, names.robots, d.robot, path + ".robot", "robot");
   if (d.task)
-    return Meaning{MeaningKind::task_start, robot, resolve(m.tasks, *d.task, path + ".task", "task")};
+    return Meaning{MeaningKind::task_start, robot, resolve(m.tasks, names.tasks, *d.task, path + ".task", "task")};
   return Meaning{MeaningKind::region_entry, robot,
-                 resolve(m.regions, *d.region, path + ".region", "region")};
+                 resolve(m.regions, names.regions, *d.region, path + ".region", "region")};
 }
 
 void check_events(const Mission& m) {
+  // The first event (in name order) of each meaning: a later one with the same meaning names it.
+  std::map<std::tuple<MeaningKind, std::size_t, std::size_t>, std::string> first_with;
   for (const auto& [event, meaning] : m.events) {
     const auto it = m.fsm.events.find(event);
     const bool c = it->second.controllable;
@@ -92,10 +106,9 @@ void check_events(const Mission& m) {
                        fmt::format("is a region entry, which the robots cause, so it must be "
                                    "uncontrollable, but {} declares it controllable (c)",
                                    m.fsm_name));
-    for (const auto& [other, other_meaning] : m.events)
-      if (other < event && other_meaning == meaning)
-        throw InputError("events." + event,
-                         fmt::format("has the same meaning as events.{}", other));
+    const auto [first, fresh] = first_with.emplace(std::tuple{meaning.kind, meaning.robot, meaning.target}, event);
+    if (!fresh)
+      throw InputError("events." + event, fmt::format("has the same meaning as events.{}", first->second));
   }
   for (const auto& [event, attr] : m.fsm.events)
     if (!m.events.count(event))
@@ -152,9 +165,8 @@ Mission check_mission(const MissionDecl& d, const supervisor::Automaton& fsm,
     m.fsm_name = d.fsm;
     m.fsm = fsm;
     if (d.robots.empty()) throw InputError("robots", "expected at least one robot");
-    check_unique(d.robots, "robots");
-    check_unique(d.tasks, "tasks");
-    check_unique(d.regions, "regions");
+    const DeclNames names{unique_names(d.robots, "robots"), unique_names(d.tasks, "tasks"),
+                          unique_names(d.regions, "regions")};
     for (std::size_t i = 0; i < d.robots.size(); ++i) {
       const double radius = i < d.radii.size() ? d.radii[i] : 0.0;
       if (!std::isfinite(radius) || radius < 0.0 || radius > 1e6)
@@ -189,7 +201,7 @@ Mission check_mission(const MissionDecl& d, const supervisor::Automaton& fsm,
       check_state(fsm, d.marked_states[i], fmt::format("marked_states[{}]", i), d.fsm);
     m.marked_states = d.marked_states;
     for (const auto& [event, meaning] : d.events) {
-      const Meaning mn = resolve_meaning(event, meaning, d);
+      const Meaning mn = resolve_meaning(event, meaning, d, names);
       if (fsm.events.count(event))
         m.events.emplace(event, mn);
       else
