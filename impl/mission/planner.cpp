@@ -125,12 +125,31 @@ Planner::Planner(const sm::Mission& m) : mission_(&m), fsm_(supervisor::compile(
       event_task_[e] = static_cast<std::int32_t>(it->second.target);
     }
   }
-  const std::size_t t = m.tasks.size();
-  task_distance_.resize(m.robots.size() * t * t);
-  for (std::size_t r = 0; r < m.robots.size(); ++r)
-    for (std::size_t a = 0; a < t; ++a)
-      for (std::size_t b = 0; b < t; ++b)
-        task_distance_[(r * t + a) * t + b] = sm::travel_cost(m, r, m.tasks[a].at, m.tasks[b].at);
+  const std::size_t t = m.tasks.size(), robots = m.robots.size();
+  task_slot_.assign(robots * t, -1);
+  std::vector<std::vector<std::size_t>> own(robots);   // each robot's tasks, in event order
+  for (EventId e = 0; e < fsm_.event_count(); ++e)
+    if (event_robot_[e] >= 0) {
+      const auto r = static_cast<std::size_t>(event_robot_[e]);
+      const auto task = static_cast<std::size_t>(event_task_[e]);
+      if (task_slot_[r * t + task] < 0) {
+        task_slot_[r * t + task] = static_cast<std::int32_t>(own[r].size());
+        own[r].push_back(task);
+      }
+    }
+  robot_task_count_.resize(robots);
+  distance_at_.resize(robots);
+  std::size_t size = 0;
+  for (std::size_t r = 0; r < robots; ++r) {
+    robot_task_count_[r] = own[r].size();
+    distance_at_[r] = size;
+    size += own[r].size() * own[r].size();
+  }
+  task_distance_.resize(size);
+  for (std::size_t r = 0; r < robots; ++r)
+    for (std::size_t a = 0; a < own[r].size(); ++a)
+      for (std::size_t b = 0; b < own[r].size(); ++b)
+        task_distance_[distance_at_[r] + a * own[r].size() + b] = sm::travel_cost(m, r, m.tasks[own[r][a]].at, m.tasks[own[r][b]].at);
 }
 
 double Planner::cost_from(std::size_t r, const sm::Point& p, std::size_t t) {
@@ -208,7 +227,7 @@ Plan Planner::search(const PlanQuery& q) {
       if (event_robot_[ev] >= 0) {  // a task start: that robot travels to the task
         const auto r = static_cast<std::size_t>(event_robot_[ev]);
         const auto t = static_cast<std::uint16_t>(event_task_[ev]);
-        tv[r] += ps[r] == here ? from_here[r * tasks + t] : task_distance_[(r * tasks + ps[r]) * tasks + t];
+        tv[r] += ps[r] == here ? from_here[r * tasks + t] : task_distance(r, ps[r], t);
         ps[r] = t;
       }
       double makespan = 0.0, total = 0.0;  // as spec cost_of does, without its copy

@@ -52,7 +52,19 @@ class Planner {
   std::vector<std::uint8_t> coaccessible_;
   std::vector<std::int32_t> event_robot_;  // [event] robot of a task start, -1 otherwise
   std::vector<std::int32_t> event_task_;   // [event] task of a task start, -1 otherwise
-  std::vector<double> task_distance_;      // [(robot * tasks + t1) * tasks + t2], travel_cost
+  // travel_cost between two tasks of one robot, for the tasks it starts (a robot only ever moves
+  // between its own tasks; a table over every task was robots x tasks^2, and 10 000 tasks that no
+  // event names took 2.3 GB, and minutes in a world): robot r's tasks are numbered by task_slot_
+  // [r * tasks + t], and the distance between slots a and b is at distance_at_[r] + a * n_r + b.
+  std::vector<std::int32_t> task_slot_;
+  std::vector<std::size_t> robot_task_count_;
+  std::vector<std::size_t> distance_at_;
+  std::vector<double> task_distance_;
+  double task_distance(std::size_t r, std::size_t from_task, std::size_t to_task) const {
+    const std::size_t tasks = task_slot_.size() / robot_task_count_.size();
+    return task_distance_[distance_at_[r] + static_cast<std::size_t>(task_slot_[r * tasks + from_task]) * robot_task_count_[r] +
+                          static_cast<std::size_t>(task_slot_[r * tasks + to_task])];
+  }
   std::map<std::tuple<std::size_t, std::uint64_t, std::uint64_t, std::size_t>, double> route_memo_;
   std::map<std::string, Plan> cache_;
   std::size_t cache_hits_ = 0;
