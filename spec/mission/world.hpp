@@ -70,6 +70,7 @@ double travel_cost(const Mission& m, std::size_t robot, const Point& from, const
 // check_mission refuses a radius over the budget instead of computing for minutes.
 inline constexpr std::size_t kMaxWorldCells = std::size_t{1} << 20;
 inline constexpr double kMaxTraversableChecks = 268435456.0;  // 2^28
+inline constexpr double kMaxScanSamples = 4194304.0;          // 2^22 samples a range scan
 double traversable_checks(const GridWorld& w, double radius_m);
 
 // The grid of the file (resolution, row lengths and characters checked; InputError at world.*);

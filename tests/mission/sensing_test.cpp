@@ -67,6 +67,14 @@ TEST(MissionSensing, BadSensorsAndUnknownObstaclesGetOneMessageAtTheirJsonPath) 
   EXPECT_EQ(message_for([](Json&) {}), "");
   EXPECT_EQ(message_for([](Json& j) { j["world"]["sensor"]["beams"] = 0; }),
             "world.sensor.beams: expected 1 to 4096 beams; got 0");
+  // Each at its bound passes; together over a big world they are tens of millions of samples a scan.
+  EXPECT_EQ(message_for([](Json& j) {
+              j["world"]["sensor"] = {{"beams", 4096}, {"range_m", 1000}, {"noise_m", 0.02}};
+              j["world"]["size_m"] = {250, 250};
+            }),
+            "world.sensor: 4096 beams reaching 353.6 m in cells of 0.25 m take 4.63e+07 samples a scan (each robot, "
+            "each step); at most 4.19e+06: fewer beams, a shorter range or larger cells");
+  EXPECT_EQ(message_for([](Json& j) { j["world"]["sensor"] = {{"beams", 4096}, {"range_m", 1000}, {"noise_m", 0.02}}; }), "");
   EXPECT_EQ(message_for([](Json& j) { j["world"]["sensor"]["range_m"] = -1; }),
             "world.sensor.range_m: expected a range in metres, > 0 and at most 1000; got -1");
   EXPECT_EQ(message_for([](Json& j) { j["world"]["sensor"]["noise_m"] = 4; }),
