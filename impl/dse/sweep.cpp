@@ -106,7 +106,18 @@ void ThreadExecutor::evaluate(const std::vector<Genome>& batch, const std::funct
   });
 }
 
-std::optional<std::string> point_problem(const DesignSpace& space, const Genome& g) {
+namespace {
+// What a point's runs need in memory: they go one after another on one thread, so the largest's.
+struct PointNeed {
+  double bytes = -1;
+  Genome genome;
+  int32_t map_size = 0;
+  std::size_t robots = 0;
+};
+
+// point_problem, noting in `need` (when given) the largest run's estimated memory, from the same
+// scenarios (a point's scenarios are built once for both).
+std::optional<std::string> check_point(const DesignSpace& space, const Genome& g, PointNeed* need) {
   try {
     const int32_t n = space.replicates(g);
     for (int32_t r = 0; r < n; ++r) {
@@ -119,30 +130,15 @@ std::optional<std::string> point_problem(const DesignSpace& space, const Genome&
           return where + ": column " + o.column.name + " names robot " + std::to_string(o.column.robot + 1) + " but point " +
                  space.describe(g) + " has " + std::to_string(s.robots.size()) + " robots";
       }
+      if (need) {
+        const double bytes = static_cast<double>(exploration::Exploration::estimated_bytes(s));
+        if (bytes > need->bytes) *need = PointNeed{bytes, g, s.map_size, s.robots.size()};
+      }
     }
   } catch (const InputError& e) {
     return std::string(e.what());
   }
   return std::nullopt;
-}
-
-namespace {
-// What a point's runs need in memory: they go one after another on one thread, so the largest's.
-struct PointNeed {
-  double bytes = -1;
-  Genome genome;
-  int32_t map_size = 0;
-  std::size_t robots = 0;
-};
-PointNeed point_need(const DesignSpace& space, const Genome& g) {
-  PointNeed need;
-  need.genome = g;
-  for (int32_t r = 0; r < space.replicates(g); ++r) {
-    const exploration::Scenario s = space.scenario(g, r);
-    const double bytes = static_cast<double>(exploration::Exploration::estimated_bytes(s));
-    if (bytes > need.bytes) need = PointNeed{bytes, g, s.map_size, s.robots.size()};
-  }
-  return need;
 }
 
 // The `points_at_once` largest points together must fit (named after the largest).
@@ -164,13 +160,16 @@ void require_points_fit(const DesignSpace& space, std::vector<PointNeed> needs, 
 }
 }  // namespace
 
+std::optional<std::string> point_problem(const DesignSpace& space, const Genome& g) { return check_point(space, g, nullptr); }
+
 void check_design_space(const DesignSpace& space, std::uint64_t memory_limit_bytes, int32_t points_at_once) {
   const DseConfig& c = space.config();
   std::vector<PointNeed> needs;
   const auto check = [&](const Genome& g) {
     if (space.violated_parameter_constraint(g) >= 0) return;
-    if (auto problem = point_problem(space, g)) throw InputError(c.file, *problem);
-    if (memory_limit_bytes != 0) needs.push_back(point_need(space, g));
+    PointNeed need;
+    if (auto problem = check_point(space, g, memory_limit_bytes != 0 ? &need : nullptr)) throw InputError(c.file, *problem);
+    if (need.bytes >= 0) needs.push_back(std::move(need));
   };
   if (c.algorithm == Algorithm::exhaustive) {
     for (uint64_t i = 0; i < space.size(); ++i) check(space.genome_of(i));
