@@ -103,7 +103,7 @@ inline CLI::Validator seed_validator() {
 // ---- resource budgets (spec/util/budget.hpp) ----------------------------------------------------
 
 // The memory this process may have: the machine's physical memory, or less where a limit says so
-// (`ulimit -v`, a container's cgroup v2 memory.max), since beyond those an allocation fails or
+// (`ulimit -v`, a container's cgroup memory limit), since beyond those an allocation fails or
 // the process is killed whatever the machine has.
 inline std::uint64_t usable_memory() {
   const long pages = ::sysconf(_SC_PHYS_PAGES), page = ::sysconf(_SC_PAGE_SIZE);

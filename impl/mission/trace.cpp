@@ -155,7 +155,7 @@ MissionTrace read_trace(std::istream& in, const std::string& source) {
   bool header = false;
   double last_t = 0;                     // of the last event or step
   std::optional<double> last_step_t;     // steps are one simulation step apart: strictly later
-  std::map<std::string, double> idle_from;   // a robot's intervals follow one another
+  std::map<std::string, double> last_interval_end;   // a robot's intervals follow one another
   while (std::getline(in, line)) {
     ++n;
     if (line.empty()) continue;
@@ -224,7 +224,7 @@ MissionTrace read_trace(std::istream& in, const std::string& source) {
       i.from_s = time("from", false);
       i.to_s = time("to", false);
       if (i.to_s < i.from_s) throw InputError(where + ": to", fmt::format("expected a time >= from ({}), got {}", i.from_s, i.to_s));
-      const auto [previous, first] = idle_from.try_emplace(i.robot, i.to_s);
+      const auto [previous, first] = last_interval_end.try_emplace(i.robot, i.to_s);
       if (!first) {
         if (i.from_s < previous->second)
           throw InputError(where + ": from", fmt::format("expected a time >= {} (where robot {}'s last interval ended), got {}",
