@@ -7,6 +7,7 @@
 #include "spec/util/input_error.hpp"
 #include "spec/util/input_file.hpp"
 #include "spec/util/json_text.hpp"
+#include "spec/util/utf8.hpp"
 
 namespace swarmcheck::views {
 
@@ -31,7 +32,7 @@ std::vector<JsonLine> json_lines(const std::string& text, const std::string& pat
 }
 
 ViewKind detect_view_kind(const std::string& text, const std::string& path) {
-  const std::size_t bom = text.starts_with("\xEF\xBB\xBF") ? 3 : 0;   // a UTF-8 byte order mark
+  const std::size_t bom = utf8::byte_order_mark_size(text);
   const std::size_t first = text.find_first_not_of(" \t\r\n", bom);
   if (first == std::string::npos) throw InputError(path, "empty file: expected a trace or an .fsm automaton");
   if (text[first] != '{') return ViewKind::fsm;

@@ -455,7 +455,7 @@ class Reader {
 
 Fsm read_fsm_compact(std::string_view text, const std::string& source,
                      swarmcheck::supervisor::Statements* stated) {
-  if (text.starts_with("\xEF\xBB\xBF")) text.remove_prefix(3);   // a UTF-8 byte order mark, as JSON inputs allow
+  text.remove_prefix(utf8::byte_order_mark_size(text));   // as JSON inputs allow
   return Reader(text, source).read(stated);
 }
 

@@ -7,6 +7,10 @@
 
 namespace swarmcheck::utf8 {
 
+// The length of a UTF-8 byte order mark at the start of s (3), or 0. Editors on Windows write
+// one; nlohmann's parser skips it in JSON, and the other readers skip it with this.
+inline std::size_t byte_order_mark_size(std::string_view s) { return s.starts_with("\xEF\xBB\xBF") ? 3 : 0; }
+
 // The offset of the first byte that does not begin a well-formed UTF-8 sequence (overlong forms,
 // surrogates and code points above U+10FFFF included), or npos when the text is valid.
 inline std::size_t first_invalid_byte(std::string_view s) {
