@@ -43,6 +43,7 @@ Environment::Environment(const spec::Scenario& s, const ExplorationOptions& opti
     : cfg_(spec::make_environment_config(s)),
       options_(options),
       grid_(cfg_),
+      walled_in_stays_(spec::walled_in_decision(*cfg_.rules, CellIndex{0, 0}).has_value()),
       threads_(threads_of(options)),
       // More threads than cores would only be refused by TBB (with a warning): the strips still
       // follow threads_, the arena the machine.
@@ -100,11 +101,7 @@ std::optional<int64_t> Environment::plan_parallel(spec::EnvironmentState& env, L
   // after the stage, 36 bytes a robot streamed out and read back on the calling thread, the
   // records cost 10^6 robots ~8 ms a step more; measured side by side, strips forced: 0.98-1.09x
   // -> 1.17-1.26x one thread, and no loss at 10^4 or 10^5 robots.)
-  const auto decide = [&](int32_t r, StripPlanning& p) {
-    int64_t n = 0;
-    spec::apply_decision_to_robot(cfg_, env, r, spec::decide_on_grid(cfg_, env, grid, r, p.candidates, n));
-    return n;
-  };
+  const auto decide = [&](int32_t r, StripPlanning& p) { return plan_robot(env, grid, r, p.candidates); };
   const auto ahead = [&](int32_t r) { prefetch(env.robots[static_cast<std::size_t>(r)].cell); };
   cells_.resize(env.robots.size());
   for (std::size_t r = 0; r < cells_.size(); ++r) cells_[r] = env.robots[r].cell;
@@ -135,7 +132,7 @@ int64_t Environment::plan_sequential(spec::EnvironmentState& env, LazyGrid& grid
   int64_t newly = 0;
   for (std::size_t r = 0; r < n; ++r) {
     if (r + kPrefetchAhead < n) prefetch(env.robots[r + kPrefetchAhead].cell);
-    newly += spec::plan_robot(cfg_, env, grid, static_cast<int32_t>(r), scratch_);
+    newly += plan_robot(env, grid, static_cast<int32_t>(r), scratch_);
   }
   return newly;
 }

@@ -62,6 +62,24 @@ class Environment {
   // How many strips a stage over `robots` robots is worth cutting (1: do it on this thread).
   int32_t strips_for(std::size_t robots) const;
   void prefetch(CellIndex c) const;
+  // Robot r's decision, on the grid and its record (spec::plan_robot's result); a walled-in robot
+  // (no free cell in its window) skips its choice where the rule set allows
+  // (spec::walled_in_decision): in a dense swarm most robots are walled in. Returns the cells newly
+  // marked visited.
+  template <class Candidates>
+  int64_t plan_robot(swarmcheck::exploration::EnvironmentState& env, LazyGrid& grid, int32_t r,
+                     Candidates& scratch) const {
+    const CellIndex current = env.robots[static_cast<std::size_t>(r)].cell;
+    if (walled_in_stays_ && grid.window_blocked(current, cfg_.scenario.params.s_range)) {
+      swarmcheck::exploration::apply_decision_to_robot(cfg_, env, r,
+                                                       *swarmcheck::exploration::walled_in_decision(*cfg_.rules, current));
+      return 0;
+    }
+    int64_t newly = 0;
+    swarmcheck::exploration::apply_decision_to_robot(
+        cfg_, env, r, swarmcheck::exploration::decide_on_grid(cfg_, env, grid, r, scratch, newly));
+    return newly;
+  }
   // Runs one parallel stage (a schedule's run) with the workers kept warm around it.
   template <class Run>
   int64_t stage(Run&& run) const {
@@ -75,6 +93,8 @@ class Environment {
   ExplorationOptions options_;
   LazyGrid grid_;
   mutable std::vector<Candidate> scratch_;   // the sequential stage's candidates, reused
+  // Whether the rule set lets a walled-in robot skip its choice (spec::walled_in_decision).
+  bool walled_in_stays_;
   int32_t threads_;
   mutable tbb::task_arena arena_;
   mutable WarmWorkers warm_{arena_};   // between the parallel stages of a step (after arena_)

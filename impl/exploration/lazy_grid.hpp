@@ -86,6 +86,18 @@ class LazyGrid {
     }
   }
 
+  // Whether every cell of c's window is blocked (an obstacle or a robot's cell): for a robot in c
+  // (its own cell blocked), whether it has no free candidate.
+  bool window_blocked(CellIndex c, int32_t s_range) const {
+    const swarmcheck::exploration::Window w = swarmcheck::exploration::window_around(c, s_range, n_);
+    bool free = false;
+    for (int32_t i = w.i_lo; i <= w.i_hi; ++i) {
+      const CellData* cell = &cells_[index(CellIndex{i, w.j_lo})];
+      for (int32_t j = w.j_lo; j <= w.j_hi; ++j, ++cell) free |= !blocked_of(*cell);
+    }
+    return !free;
+  }
+
   // Asks the memory system for the rows of c's window ahead of use (no effect on results).
   void prefetch_window(CellIndex c, int32_t s_range) const;
 

@@ -190,4 +190,11 @@ RobotDecision decide(const RuleDescriptor& rules, CellIndex current, std::span<c
   return d;
 }
 
+std::optional<RobotDecision> walled_in_decision(const RuleDescriptor& rules, CellIndex current) {
+  if (rules.deposit_centre != DepositCentre::robot_cell || !rules.keeps_occupancy_invariants) return std::nullopt;
+  RobotDecision d;
+  d.deposit_centre = current;
+  return d;
+}
+
 }  // namespace swarmcheck::exploration

@@ -18,6 +18,7 @@
 // FallbackRule::uniform_free: to a uniform free candidate (Purpose::fallback), else stay.
 #include <cmath>
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <string>
 #include <type_traits>
@@ -119,5 +120,14 @@ struct RobotDecision {
 
 RobotDecision decide(const RuleDescriptor& rules, CellIndex current, std::span<const Candidate> candidates,
                      const Choice& choice);
+
+// The decision of a robot in `current` none of whose candidates is free (every window cell
+// blocked, or none in the map), for rule sets whose decision then depends on nothing else:
+// choose_rule gives no target (its target is a free candidate or none: the choice lemma of the
+// occupancy obligation, proved for the deterministic and stochastic rule sets), so decide() keeps
+// the robot where it is, marks nothing and deposits around `current`, whatever the pheromone.
+// nullopt where the deposit centre is the best candidate (it depends on the pheromone), or the
+// rule set is not one the lemma covers. Lets an implementation skip a walled-in robot's choice.
+std::optional<RobotDecision> walled_in_decision(const RuleDescriptor& rules, CellIndex current);
 
 }  // namespace swarmcheck::exploration

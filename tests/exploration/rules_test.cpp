@@ -175,6 +175,34 @@ TEST(Choice, StochasticFallbackPicksOnlyFreeCells) {
   EXPECT_EQ(seen, (std::set<int32_t>{0, 3}));
 }
 
+bool same_decision(const RobotDecision& a, const RobotDecision& b) {
+  return a.moves == b.moves && a.to == b.to && a.occupies == b.occupies && a.marks == b.marks && a.mark == b.mark &&
+         a.deposit_centre == b.deposit_centre;
+}
+
+// The shortcut impl takes for a robot with no free cell around it is choose() then decide(), for
+// any pheromone (NaN and infinities included), any number of candidates, any draw site.
+RC_GTEST_PROP(Choice, AWalledInDecisionIsWhatChooseAndDecideGiveWhenNoCandidateIsFree, ()) {
+  const auto rule = *rc::gen::element(RuleSet::thesis, RuleSet::deterministic, RuleSet::stochastic);
+  const auto n = *rc::gen::inRange(0, 49);
+  std::vector<Candidate> c;
+  for (int32_t k = 0; k < n; ++k) {
+    const double tau = *rc::gen::oneOf(rc::gen::element(0.0, -0.0, 1.0, std::numeric_limits<double>::infinity(),
+                                                        std::numeric_limits<double>::quiet_NaN()),
+                                       rc::gen::map(rc::gen::inRange(0, 1000000), [](int v) { return v / 1000.0; }));
+    c.push_back(Candidate{{k / 7, k % 7}, tau, true});
+  }
+  Params p = default_params();
+  p.phi = *rc::gen::element(1.0, 0.0, 2.0, -1.0, 0.5);
+  const CellIndex current{*rc::gen::inRange(0, 100), *rc::gen::inRange(0, 100)};
+  const auto shortcut = walled_in_decision(rules_of(rule), current);
+  RC_ASSERT(shortcut.has_value() == (rules_of(rule).deposit_centre == DepositCentre::robot_cell));
+  if (!shortcut) return;
+  const Choice ch = choose_by(rule, c, p, *rc::gen::arbitrary<uint64_t>(), *rc::gen::inRange<int64_t>(0, 70000),
+                              *rc::gen::inRange(0, 1000));
+  RC_ASSERT(same_decision(*shortcut, decide(rules_of(rule), current, c, ch)));
+}
+
 TEST(Rng, KeyDependsOnEveryComponentAndIndexIsInRange) {
   const uint64_t k = rng_key(7, 3, 2, Purpose::tie_break);
   EXPECT_EQ(k, rng_key(7, 3, 2, Purpose::tie_break));
