@@ -76,8 +76,16 @@ try {
   for (const p of pages) await p.click('button.run');
   await pages[1].waitForFunction(() => Number(document.body.dataset.received || 0) >= 3);
   await pages[1].click('button.pause');
-  await pages[1].waitForTimeout(300);
-  const paused = await pages[1].evaluate(() => document.body.dataset.liveStep);
+  // A frame already on its way may still land (slowly, on a loaded machine): wait until the step
+  // has held for 300 ms (at most 10 s), then it must hold.
+  const step = () => pages[1].evaluate(() => document.body.dataset.liveStep);
+  let paused = await step();
+  for (let t = 0; t < 10000; t += 300) {
+    await pages[1].waitForTimeout(300);
+    const now = await step();
+    if (now === paused) break;
+    paused = now;
+  }
   await pages[1].waitForTimeout(600);
   check(await pages[1].evaluate(() => document.body.dataset.liveStep) === paused, `paused: no step arrives (stays at ${paused})`);
   await pages[1].click('button.pause');
