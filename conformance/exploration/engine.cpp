@@ -70,6 +70,7 @@ swarmcheck::exploration::ExplorationOptions grouped_options() {
   o.threads = 4;
   o.parallel_min_robots = 1;
   o.parallel_min_bodies = 1;
+  o.walled_in_always = true;
   return o;
 }
 

@@ -36,7 +36,8 @@ class Simulation {
 std::uint64_t estimated_bytes(Engine engine, const swarmcheck::exploration::Scenario& s);
 
 // The impl options of a "grouped" case: planning, deposits and bodies in parallel from the first
-// robot, on more threads than this machine may have cores (the schedule must not depend on them).
+// robot, on more threads than this machine may have cores (the schedule must not depend on them),
+// and every robot tested for being walled in, however sparse the swarm.
 swarmcheck::exploration::ExplorationOptions grouped_options();
 
 // `s` must be valid; `options` only matter to the impl.

@@ -93,7 +93,8 @@ class Environment {
   ExplorationOptions options_;
   LazyGrid grid_;
   mutable std::vector<Candidate> scratch_;   // the sequential stage's candidates, reused
-  // Whether the rule set lets a walled-in robot skip its choice (spec::walled_in_decision).
+  // Whether the rule set lets a walled-in robot skip its choice (spec::walled_in_decision), and
+  // the robots are dense enough for testing them to pay.
   bool walled_in_stays_;
   int32_t threads_;
   mutable tbb::task_arena arena_;

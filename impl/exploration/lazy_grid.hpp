@@ -90,12 +90,14 @@ class LazyGrid {
   // (its own cell blocked), whether it has no free candidate.
   bool window_blocked(CellIndex c, int32_t s_range) const {
     const swarmcheck::exploration::Window w = swarmcheck::exploration::window_around(c, s_range, n_);
-    bool free = false;
+    // Out at the first free cell: in a sparse swarm that is the first cell looked at, so the
+    // test costs robots that are not walled in next to nothing.
     for (int32_t i = w.i_lo; i <= w.i_hi; ++i) {
       const CellData* cell = &cells_[index(CellIndex{i, w.j_lo})];
-      for (int32_t j = w.j_lo; j <= w.j_hi; ++j, ++cell) free |= !blocked_of(*cell);
+      for (int32_t j = w.j_lo; j <= w.j_hi; ++j, ++cell)
+        if (!blocked_of(*cell)) return false;
     }
-    return !free;
+    return true;
   }
 
   // Asks the memory system for the rows of c's window ahead of use (no effect on results).

@@ -34,6 +34,10 @@ struct ExplorationOptions {
   int32_t parallel_min_robots = 0;
   // Controllers and bodies of at least this many robots step in parallel.
   int32_t parallel_min_bodies = 4096;
+  // A robot with no free cell around it skips its choice (the same bits: spec::walled_in_decision)
+  // when robots and obstacles are dense enough for testing every robot to pay; true: in every run
+  // (the conformance harness forces it, as it forces the strips).
+  bool walled_in_always = false;
 };
 
 class Exploration {
