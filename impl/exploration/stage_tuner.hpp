@@ -14,8 +14,12 @@
 // kReprobeEvery stages, and the interval doubles (up to kReprobeMax) each time a probe leaves
 // the choice as it was, and starts again from kReprobeEvery when the choice changes (by a probe
 // or by the chosen mode's own times). A probe is judged on fresh times only: kTrials timed
-// stages of the other mode, ended after the first if that one took kClearlySlower times the
-// chosen mode's median. (A probe of one stage, compared
+// stages of the other mode, ended after kProbeSlowToEnd of them took kClearlySlower times the
+// chosen mode's median. (Ended after one such stage, a probe that met one cold stage, its
+// caches emptied by other work, kept the slower mode for up to kReprobeMax stages: on a 2-core
+// Xeon VM, bench_exploration's threads/cli rows, which alternate two simulations every 16
+// steps, ran one thread in 40 % of 10^4-robot steps where strips were 1.3-1.5x faster. A probe
+// of one stage, compared
 // through a median with two times from long before, kept a choice that one burst of the
 // machine's noise had made for hundreds of stages: on a shared 2-core VM a tenth of the stages
 // ran on the slower mode.) A stage right after a change of mode runs with caches warmed by the
@@ -33,6 +37,7 @@ class StageTuner {
   static constexpr int64_t kReprobeEvery = 32;
   static constexpr int64_t kReprobeMax = 1024;
   static constexpr double kClearlySlower = 1.25;
+  static constexpr int kProbeSlowToEnd = 2;
 
   // Whether the next stage should run on the strips.
   bool next_parallel() const {
@@ -53,6 +58,7 @@ class StageTuner {
     const int m = parallel ? kParallel : kSequential;
     if (chosen && probe_left_ == 0 && parallel != best_before) {   // a probe's first (warm-up) stage
       probe_left_ = kTrials;
+      probe_slow_ = 0;
       probe_parallel_ = parallel;
       best_at_probe_ = best_before;
       count_[m] = 0;   // the probe is judged on its own times
@@ -76,7 +82,8 @@ class StageTuner {
     }
     if (switched) return;
     const auto chosen_median = static_cast<double>(median(best_at_probe_ ? kParallel : kSequential));
-    if (--probe_left_ > 0 && static_cast<double>(ns) < kClearlySlower * chosen_median) return;
+    if (static_cast<double>(ns) >= kClearlySlower * chosen_median) ++probe_slow_;
+    if (--probe_left_ > 0 && probe_slow_ < kProbeSlowToEnd) return;
     probe_left_ = 0;   // the probe is over
     since_probe_ = 0;
     interval_ = faster_is_parallel() == best_at_probe_ ? std::min(2 * interval_, kReprobeMax) : kReprobeEvery;
@@ -107,6 +114,7 @@ class StageTuner {
   int64_t interval_ = kReprobeEvery;     // of the next probe
   int64_t stages_ = 0;
   int probe_left_ = 0;                   // timed stages the running probe still needs
+  int probe_slow_ = 0;                   // of its timed stages, those clearly slower
   bool decided_ = false;                 // latched: the trials are over
   bool probe_parallel_ = false, best_at_probe_ = false;
   bool last_parallel_ = false, repeat_ = false;
