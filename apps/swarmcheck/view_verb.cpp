@@ -36,12 +36,22 @@ int view_dse_folder(const ViewCliOptions& o) {
   const json_io::Json results = json_io::parse_json_text(views::read_text_file(results_path, "DSE results"), results_path);
   if (!results.is_object() || results.value("format", json_io::Json()) != "swarmcheck-dse-results")
     throw InputError(results_path, "format: expected \"swarmcheck-dse-results\" (a file `swarmcheck dse` writes)");
+  if (!results.contains("points") || !results["points"].is_array())
+    throw InputError(results_path, "points: expected the list of design points (a file `swarmcheck dse` writes)");
+  const json_io::Json& points = results["points"];
+  for (std::size_t k = 0; k < points.size(); ++k)
+    if (!points[k].is_object() || !points[k].contains("parameters"))
+      throw InputError(results_path, "points[" + std::to_string(k) + "]: expected a design point (an object with \"parameters\")");
   const std::string report_path = (dir / "report.html").string();
   if (!std::filesystem::is_regular_file(dir / "report.html"))
     throw InputError(report_path, "missing: rerun `swarmcheck dse` with -o " + o.file + " (it resumes from its journal)");
-  io::write_file_atomically(o.out, views::read_text_file(report_path, "DSE report"));
-  const std::size_t points = results.contains("points") && results["points"].is_array() ? results["points"].size() : 0;
-  fmt::print("{}: dse view of {} ({} design points)\n", o.out, o.file, points);
+  const std::string report = views::read_text_file(report_path, "DSE report");
+  // The page is copied as it is: it must be the one `swarmcheck dse` writes, not any file.
+  if (report.rfind("<!DOCTYPE html>", 0) != 0 || report.find("<title>swarmcheck DSE: ") > 200)
+    throw InputError(report_path, "expected the report `swarmcheck dse` writes (an HTML page titled \"swarmcheck DSE: ...\"); "
+                                  "rerun `swarmcheck dse` with -o " + o.file);
+  io::write_file_atomically(o.out, report);
+  fmt::print("{}: dse view of {} ({} design points)\n", o.out, o.file, points.size());
   return 0;
 }
 

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <algorithm>
 #include <fstream>
 #include <sstream>
 
@@ -160,4 +161,33 @@ TEST(ViewsCli, ViewOfADseFolderIsItsReportAndAnyOtherFolderIsStatus2) {
   const auto wrong = run_binary(kBin, "view " + other.string() + " -o " + (d / "o.html").string());
   EXPECT_EQ(wrong.status, 2) << wrong.out;
   EXPECT_FALSE(fs::exists(d / "o.html"));
+}
+
+TEST(ViewsCli, ADseFolderWithBrokenResultsOrAReportThatIsNotDsesIsStatus2NamingTheFile) {
+  const fs::path d = scratch();
+  const fs::path dse = d / "dse";
+  const auto sweep = run_binary(kBin, "dse " + kSource + "/scenarios/thesis/dse/ertu.dse.json --scenario " + kSource +
+                                          "/scenarios/thesis/dse/base.json -o " + dse.string());
+  ASSERT_EQ(sweep.status, 0) << sweep.out;
+  std::ifstream in(dse / "results.json");
+  const std::string results((std::istreambuf_iterator<char>(in)), {});
+  const std::string out = (d / "v.html").string();
+  const auto refused = [&](const std::string& expected) {
+    const auto r = run_binary(kBin, "view " + dse.string() + " -o " + out);
+    EXPECT_EQ(r.status, 2) << r.out;
+    EXPECT_NE(r.out.find(expected), std::string::npos) << r.out;
+    EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 1) << r.out;
+    EXPECT_FALSE(fs::exists(out));
+  };
+  const auto at = results.find("\"points\"");
+  ASSERT_NE(at, std::string::npos);
+  write(dse / "results.json", results.substr(0, at) + "\"points\": 3, \"was\"" + results.substr(at + 8));
+  refused((dse / "results.json").string() + ": points: expected the list of design points");
+  const auto first = results.find("\"parameters\"", at);
+  ASSERT_NE(first, std::string::npos);
+  write(dse / "results.json", results.substr(0, first) + "\"parameterz\"" + results.substr(first + 12));
+  refused((dse / "results.json").string() + ": points[0]: expected a design point");
+  write(dse / "results.json", results);
+  write(dse / "report.html", "<html>something else</html>");
+  refused((dse / "report.html").string() + ": expected the report `swarmcheck dse` writes");
 }
