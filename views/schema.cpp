@@ -25,9 +25,26 @@ Json integer_schema() {
   return j;
 }
 
+// A scenario's body: a name, or {"kind": name, "parameters": {Body_Block name: number}}
+// (json_io::JsonCodec<BodyChoice>); the parameters' names and defaults come with it.
+Json body_schema() {
+  Json kinds = Json::array();
+  for (const BodyDescriptor& b : kBodies) kinds.push_back(std::string(b.name));
+  Json names = Json::array();
+  Json defaults = Json::object();
+  const IntocpsBodyParams d = scenario_intocps_params();
+  for (const IntocpsBodyParameter& p : intocps_body_parameters()) {
+    names.push_back(std::string(p.name));
+    defaults[std::string(p.name)] = intocps_parameter_value(d, p);
+  }
+  return {{"type", "x-body"}, {"enum", kinds}, {"x-parameters", names}, {"x-parameter-defaults", defaults}};
+}
+
 template <class T>
 Json schema_of() {
-  if constexpr (json_io::is_hana_struct<T>) {
+  if constexpr (std::is_same_v<T, BodyChoice>) {
+    return body_schema();
+  } else if constexpr (json_io::is_hana_struct<T>) {
     Json props = Json::object();
     Json order = Json::array();
     boost::hana::for_each(boost::hana::accessors<T>(), [&](auto pair) {

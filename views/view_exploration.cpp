@@ -182,6 +182,10 @@ Page exploration_page(const std::string& text, const std::string& path, const Vi
     fields.push_back(f);
   }
   data["fields"] = fields;
+  // The intocps body reports a point `axle_offset` ahead of the axle it turns about: the view
+  // draws the body at the axle and the reported point in front of it.
+  if (t.scenario.mode == Mode::cosim && t.scenario.body.kind == BodyKind::intocps)
+    data["axle_offset"] = t.scenario.body.intocps.axle_offset;
   if (counterexample) add_counterexample(data, t);
   const std::string title = (counterexample ? "swarmcheck counterexample: " : "swarmcheck trace: ") + path;
   return Page{title, data};

@@ -23,6 +23,8 @@ json_io::Json run_summary(const Sim& sim) {
   j["free_cells"] = sim.free_cells();
   j["rule"] = json_io::enum_to_string(s.rule);
   j["mode"] = json_io::enum_to_string(s.mode);
+  j["controller"] = json_io::enum_to_string(s.controller);   // they run in cosim mode only
+  j["body"] = json_io::enum_to_string(s.body.kind);
   j["seed"] = s.seed;
   j["map_size"] = s.map_size;
   j["robots"] = s.robots.size();

@@ -34,7 +34,7 @@ class ControllerComponent final : public Component {
     in_ = {0.0, 0.0, 0.0, 0.0, 0.0, 0, 0};
     const ex::ControllerState s = ex::initial_controller();
     out_ = {s.servo_left, s.servo_right, s.on_destination_output, 0, 0};
-    local_ = {s.beta_rad, 0.0, 0.0, 0.0, s.maneuver};
+    local_ = {s.beta_rad, 0.0, 0.0, 0.0, s.maneuver, s.target_theta_rad};
   }
 
   void initialize() override {
@@ -44,7 +44,7 @@ class ControllerComponent final : public Component {
       throw FmuError("k_beta and k_v must be finite");
   }
 
-  void step(double /*h_s*/) override {
+  void step(double h_s) override {
     if ((local_.maneuver != 1 && local_.maneuver != 2) || (out_.onDestinationOutput != 0 && out_.onDestinationOutput != 1))
       throw FmuError("the controller's state is not one it can reach (maneuver " + std::to_string(local_.maneuver) +
                      ", onDestinationOutput " + std::to_string(out_.onDestinationOutput) + "): a restored state was altered");
@@ -52,7 +52,7 @@ class ControllerComponent final : public Component {
     rp.k_beta = params_.k_beta;
     rp.k_v = params_.k_v;
     const ex::ControllerState before{local_.maneuver, out_.onDestinationOutput, local_.beta, out_.servoLeft,
-                                     out_.servoRight};
+                                     out_.servoRight, local_.target};
     const ex::BodyState pose{in_.x, in_.y, in_.phi};
     const ex::Point_m waypoint{in_.xDesired, in_.yDesired};
     int32_t told = in_.onDestinationInput;
@@ -67,7 +67,7 @@ class ControllerComponent final : public Component {
       told = accepted ? 1 : 0;
       out_.epochAck = e.ack;
     }
-    const ex::ControllerInputs inputs{pose, waypoint, told};
+    const ex::ControllerInputs inputs{pose, waypoint, told, h_s};
     const ex::ControllerState next = ex::controller_step(rp, before, inputs);
     if (params_.handshake == 0) accepted = before.on_destination_output == 1 && next.on_destination_output == 0;
     out_.servoLeft = next.servo_left;
@@ -76,6 +76,7 @@ class ControllerComponent final : public Component {
     out_.accepted += accepted ? 1 : 0;
     local_.beta = next.beta_rad;
     local_.maneuver = next.maneuver;
+    local_.target = next.target_theta_rad;
     // rho, v and w cost the step's trigonometry again: computed when read (settle), not each step.
     last_ = Last{rp, before, inputs};
   }

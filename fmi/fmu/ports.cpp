@@ -63,6 +63,7 @@ const char* describe(const std::string& member) {
       {"v", "linear speed command"},
       {"w", "angular speed command"},
       {"maneuver", "1 orient, 2 drive"},
+      {"target", "the heading maneuver 1 turns to, rad (chosen when it began)"},
       {"x0", "start x, m"},
       {"y0", "start y, m"},
       {"theta0", "start heading, rad (forward is (-sin theta, cos theta))"},

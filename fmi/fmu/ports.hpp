@@ -64,7 +64,7 @@ struct ControllerOutputs {
 };
 struct ControllerLocalVariables {
   BOOST_HANA_DEFINE_STRUCT(ControllerLocalVariables,
-      (double, beta), (double, rho), (double, v), (double, w), (int32_t, maneuver));
+      (double, beta), (double, rho), (double, v), (double, w), (int32_t, maneuver), (double, target));
 };
 
 // ---- Body (INTO-CPS line follower Body_Block, steady state; spec/exploration/body.hpp) ----

@@ -52,6 +52,8 @@ ParameterValue parameter_value(Knob knob, const Json& v, const std::string& path
     out.text = v.get<std::string>();
     if (knob == Knob::rule) (void)json_io::enum_from_string<exploration::RuleSet>(out.text, path);
     if (knob == Knob::mode) (void)json_io::enum_from_string<exploration::Mode>(out.text, path);
+    if (knob == Knob::controller) (void)json_io::enum_from_string<exploration::ControllerKind>(out.text, path);
+    if (knob == Knob::body) (void)json_io::enum_from_string<exploration::BodyKind>(out.text, path);
     return out;
   }
   constexpr double kExact = 9007199254740992.0;   // 2^53: integers beyond are not exact in a double

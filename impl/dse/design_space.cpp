@@ -72,6 +72,10 @@ void apply_scalar(Scenario& s, Knob k, const ParameterValue& v) {
     case Knob::cell_size: s.cell_size = v.number; break;
     case Knob::rule: s.rule = json_io::enum_from_string<exploration::RuleSet>(v.text, "rule"); break;
     case Knob::mode: s.mode = json_io::enum_from_string<exploration::Mode>(v.text, "mode"); break;
+    case Knob::controller:
+      s.controller = json_io::enum_from_string<exploration::ControllerKind>(v.text, "controller");
+      break;
+    case Knob::body: s.body.kind = json_io::enum_from_string<exploration::BodyKind>(v.text, "body"); break;
     case Knob::seed: s.seed = static_cast<uint64_t>(v.number); break;
     case Knob::max_steps: s.max_steps = static_cast<int64_t>(v.number); break;
     default: break;   // placement and replicates are applied by scenario()
@@ -186,6 +190,8 @@ Value DesignSpace::knob_value(const Genome& g, Knob k) const {
     case Knob::obstacle_density: return Value::of_number(static_cast<double>(s.obstacles.size()) / (double(s.map_size) * s.map_size));
     case Knob::rule: return Value::of_text(json_io::enum_to_string(s.rule));
     case Knob::mode: return Value::of_text(json_io::enum_to_string(s.mode));
+    case Knob::controller: return Value::of_text(json_io::enum_to_string(s.controller));
+    case Knob::body: return Value::of_text(json_io::enum_to_string(s.body.kind));
     case Knob::seed: return Value::of_number(static_cast<double>(s.seed));
     case Knob::max_steps: return Value::of_number(static_cast<double>(s.max_steps));
     case Knob::replicates: return Value::of_number(1);

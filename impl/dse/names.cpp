@@ -9,7 +9,7 @@ namespace {
 
 using VT = ValueType;
 
-constexpr std::array<KnobInfo, 20> kKnobs{{
+constexpr std::array<KnobInfo, 22> kKnobs{{
     {Knob::s_range, "s_range", "", "params.s_range", VT::number, true, "sensing and spraying range, cells"},
     {Knob::a1, "a1", "", "params.a1", VT::number, false, "deposit decay length, cells"},
     {Knob::a2, "a2", "", "params.a2", VT::number, false, "divisor of the uniform deposit term"},
@@ -30,6 +30,9 @@ constexpr std::array<KnobInfo, 20> kKnobs{{
      "share of the map's cells made obstacles (rounded), drawn from the run's seed"},
     {Knob::rule, "rule", "", "rule", VT::text, false, "thesis | deterministic | stochastic"},
     {Knob::mode, "mode", "", "mode", VT::text, false, "abstract | cosim"},
+    {Knob::controller, "controller", "", "controller", VT::text, false, "swarmcheck | thesis (cosim mode)"},
+    {Knob::body, "body", "", "body", VT::text, false,
+     "kinematic | intocps (cosim mode; an intocps body keeps the base scenario's parameters)"},
     {Knob::seed, "seed", "", "seed", VT::number, true, "the point's one seed"},
     {Knob::max_steps, "max_steps", "maxSteps", "max_steps", VT::number, true, "master steps at most"},
     {Knob::replicates, "replicates", "", "(runs per point)", VT::number, true,

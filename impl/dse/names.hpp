@@ -17,7 +17,7 @@ namespace swarmcheck::dse {
 enum class Knob : uint8_t {
   s_range, a1, a2, epsilon, max_ph, ertu, eta, phi, lambda, step_size,   // params.*
   map_size, cell_size, robot_count, obstacle_count, obstacle_density,
-  rule, mode, seed, max_steps, replicates
+  rule, mode, controller, body, seed, max_steps, replicates
 };
 
 struct KnobInfo {

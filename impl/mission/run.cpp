@@ -81,7 +81,7 @@ Proposal propose(const RunOptions& o, const ex::RobotParams& rp, const RobotSim&
     }
     return p;
   }
-  ex::ControllerInputs in{ex::BodyState{r.pos[0], r.pos[1], r.theta}, target, driving ? 0 : 1};
+  ex::ControllerInputs in{ex::BodyState{r.pos[0], r.pos[1], r.theta}, target, driving ? 0 : 1, o.dt_s};
   p.ctrl = ex::controller_step(rp, r.ctrl, in);
   const ex::BodyState b =
       ex::body_step(rp, in.pose, p.ctrl.servo_left, p.ctrl.servo_right, o.dt_s);

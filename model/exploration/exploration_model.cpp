@@ -1,7 +1,5 @@
 #include "model/exploration/exploration_model.hpp"
 
-#include "spec/exploration/body.hpp"
-#include "spec/exploration/controller.hpp"
 #include "spec/exploration/invariants.hpp"
 #include "spec/exploration/master.hpp"
 #include "spec/util/demand.hpp"
@@ -9,10 +7,11 @@
 namespace swarmcheck::model::exploration {
 
 ExplorationModel::ExplorationModel(const Scenario& s, RobotParams rp)
-    : cfg_(make_environment_config(s)), rp_(rp), grid_(cfg_), env_(initial_environment(cfg_, grid_)) {
+    : cfg_(make_environment_config(s)), robot_(make_robot_config(s, rp)), grid_(cfg_),
+      env_(initial_environment(cfg_, grid_)) {
   for (const Point_m& p : s.robots) {
-    ctrl_.push_back(initial_controller());
-    body_.push_back(BodyState{p[0], p[1], 0.0});
+    ctrl_.push_back(initial_controller_of(robot_));
+    body_.push_back(initial_body(robot_, p));
   }
 }
 
@@ -30,11 +29,9 @@ void ExplorationModel::step() {
 }
 
 void ExplorationModel::robots_step(int32_t env_output) {
-  for (std::size_t r = 0; r < ctrl_.size(); ++r) {
-    const ControllerState before = ctrl_[r];
-    ctrl_[r] = controller_step(rp_, before, ControllerInputs{body_[r], env_.robots[r].waypoint, env_output});
-    body_[r] = body_step(rp_, body_[r], before.servo_left, before.servo_right, cfg_.scenario.params.step_size);
-  }
+  for (std::size_t r = 0; r < ctrl_.size(); ++r)
+    robot_step(robot_, ctrl_[r], body_[r], env_.robots[r].waypoint, env_output, clock_s_);
+  clock_s_ = clock_s_ + cfg_.scenario.params.step_size;
 }
 
 void ExplorationModel::environment_step(bool all_arrived) {
@@ -43,13 +40,19 @@ void ExplorationModel::environment_step(bool all_arrived) {
 
 void ExplorationModel::place_bodies_on_waypoints() {
   for (std::size_t r = 0; r < body_.size(); ++r) {
-    body_[r].x_m = env_.robots[r].waypoint[0];
-    body_[r].y_m = env_.robots[r].waypoint[1];
+    body_[r].pose.x_m = env_.robots[r].waypoint[0];
+    body_[r].pose.y_m = env_.robots[r].waypoint[1];
   }
 }
 
 StepRecord ExplorationModel::record() const {
-  return make_step_record(env_, pheromone_digest(cfg_, grid_, env_.tick), ctrl_, body_);
+  std::vector<BodyState> poses;
+  std::vector<IntocpsBodyState> intocps;
+  for (const BodyMemory& b : body_) {
+    poses.push_back(b.pose);
+    if (b.intocps) intocps.push_back(*b.intocps);
+  }
+  return make_step_record(env_, pheromone_digest(cfg_, grid_, env_.tick), ctrl_, poses, intocps);
 }
 
 }  // namespace swarmcheck::model::exploration

@@ -7,6 +7,7 @@
 
 #include "model/exploration/dense_grid.hpp"
 #include "spec/exploration/environment_step.hpp"
+#include "spec/exploration/robot.hpp"
 #include "spec/exploration/types.hpp"
 
 namespace swarmcheck::model::exploration {
@@ -49,11 +50,12 @@ class ExplorationModel {
 
  private:
   EnvironmentConfig cfg_;
-  RobotParams rp_;
+  RobotConfig robot_;
   DenseGrid grid_;
   EnvironmentState env_;
+  double clock_s_ = 0.0;   // the master's time, by repeated addition of the step (as INTO-CPS's engine)
   std::vector<ControllerState> ctrl_;
-  std::vector<BodyState> body_;
+  std::vector<BodyMemory> body_;
 };
 
 }  // namespace swarmcheck::model::exploration

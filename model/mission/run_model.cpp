@@ -299,7 +299,7 @@ Move propose(const World& w, const Robot& r) {
   }
   const ex::RobotParams params{};
   const ex::BodyState pose{r.pos[0], r.pos[1], r.theta_rad};
-  const ex::ControllerInputs in{pose, r.waypoint, r.on_leg ? 0 : 1};  // 1: a waypoint to take
+  const ex::ControllerInputs in{pose, r.waypoint, r.on_leg ? 0 : 1, w.o.dt_s};  // 1: a waypoint to take
   mv.controller = ex::controller_step(params, r.controller, in);
   const ex::BodyState next = ex::body_step(params, pose, mv.controller.servo_left,
                                            mv.controller.servo_right, w.o.dt_s);

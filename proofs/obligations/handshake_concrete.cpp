@@ -19,7 +19,8 @@ ControllerPort controller(const Variant& v, const exploration::RobotParams& rp, 
   const exploration::Point_m wp{s.x_desired_m[i], s.y_desired_m[i]};
   if (v.protocol == Protocol::flag) {
     const exploration::ControllerState before = s.ctrl[i];
-    s.ctrl[i] = exploration::controller_step(rp, before, exploration::ControllerInputs{pose, wp, env_out ? 1 : 0});
+    s.ctrl[i] = exploration::controller_step(rp, before,
+                                             exploration::ControllerInputs{pose, wp, env_out ? 1 : 0, kHandshakeStep_s});
     p.out = s.ctrl[i].on_destination_output == 1;
     ev.accept[i] = before.on_destination_output == 1 && !p.out;
     return p;

@@ -21,6 +21,10 @@
 
 namespace swarmcheck::proofs::handshake {
 
+// The step the controllers' outputs are held for: it sets only the servos' gains, which no
+// handshake property reads.
+inline constexpr double kHandshakeStep_s = 0.1;
+
 enum class Master { jacobi, gauss_seidel };   // gauss_seidel: Environment after the controllers
 enum class Protocol { flag, epoch };          // flag: the thesis's; epoch: numbered waypoints
 

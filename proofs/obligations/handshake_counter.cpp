@@ -15,6 +15,7 @@
 #include <fmt/format.h>
 #include <vector>
 
+#include "proofs/obligations/handshake_concrete.hpp"
 #include "proofs/obligations/kinduction.hpp"
 #include "proofs/obligations/obligation.hpp"
 #include "proofs/obligations/translate.hpp"
@@ -55,8 +56,10 @@ bool enumerate_moves(Session& session, MoveTable& table) {
         const sym::Real x = sym::Real::var("x"), y = sym::Real::var("y"), theta = sym::Real::var("theta"),
                         wx = sym::Real::var("wx"), wy = sym::Real::var("wy");
         const exploration::ControllerCoreT<S> after = exploration::controller_rule<S>(
-            p, {sym::Bool(out == 1), sym::Bool(drv == 1), sym::Real::var("beta"), sym::Real(0.0), sym::Real(0.0)},
-            {x, y, theta, wx, wy, sym::Bool(eo == 1)});
+            p,
+            {sym::Bool(out == 1), sym::Bool(drv == 1), sym::Real::var("beta"), sym::Real(0.0), sym::Real(0.0),
+             sym::Real::var("target")},
+            {x, y, theta, wx, wy, sym::Bool(eo == 1), sym::Real(handshake::kHandshakeStep_s)});
         const z3::expr o = t(after.idle), d = t(after.driving);
         auto magnitude = [](const z3::expr& v) { return z3::ite(v < 0, -v, v); };
         const z3::expr at = magnitude(t(wx) - t(x)) + magnitude(t(wy) - t(y)) < t(p.tolerance_m);   // the property's

@@ -107,9 +107,10 @@ Step Encoding::make_step(int t) {
     s.at.push_back(magnitude(cur.wx[k] - s.x[k]) + magnitude(cur.wy[k] - s.y[k]) < tol_);
     if (flag) {
       const exploration::ControllerCoreT<S> before{sbool(fmt::format("out_{}", i)), sbool(fmt::format("driving_{}", i)),
-                                                   sreal(fmt::format("beta_{}", i)), sym::Real(0.0), sym::Real(0.0)};
-      const exploration::ControllerCoreT<S> after =
-          exploration::controller_rule<S>(params, before, {x, y, theta, wx, wy, sbool("env_out")});
+                                                   sreal(fmt::format("beta_{}", i)), sym::Real(0.0), sym::Real(0.0),
+                                                   sreal(fmt::format("target_{}", i))};
+      const exploration::ControllerCoreT<S> after = exploration::controller_rule<S>(
+          params, before, {x, y, theta, wx, wy, sbool("env_out"), sym::Real(kHandshakeStep_s)});
       const z3::expr o = tr_(after.idle), d = tr_(after.driving);
       new_out.push_back(o);
       new_ack.push_back(cur.ack[k]);

@@ -66,15 +66,14 @@ ModelRun run_from_model(Encoding& enc, const z3::model& m, int depth) {
 // model's own, then the ones that put the bearing error in each class of the controller's
 // thresholds (atan2 is uninterpreted in the encoding and the heading enters only through it).
 std::vector<double> heading_candidates(const exploration::RobotParams& rp, const RobotInput& in, double wx,
-                                       double wy, bool driving) {
-  using C = num::Concrete;
-  const exploration::DeltaT<C> d{wx - in.x_m, wy - in.y_m};
-  const exploration::DeltaT<C> used = driving ? d : exploration::atan2_fix_rule<C>(d, rp.tolerance_m);
-  const double bearing = std::atan2(used.dy, used.dx);
+                                       double wy, const exploration::ControllerState& c) {
+  // beta = bearing - theta - pi/2 while driving; target - theta while orienting (the target held).
+  const double bearing = std::atan2(wy - in.y_m, wx - in.x_m);
+  const double zero_beta = c.maneuver == 2 ? bearing - std::numbers::pi / 2 : c.target_theta_rad;
   std::vector<double> out{in.theta_rad};
   for (double beta : {0.0, (rp.orient_tolerance_rad + rp.reorient_rad) / 2, 2 * rp.reorient_rad,
                       std::numbers::pi / 2, std::numbers::pi})
-    out.push_back(bearing - std::numbers::pi / 2 - beta);
+    out.push_back(zero_beta - beta);
   return out;
 }
 
@@ -90,10 +89,11 @@ bool replay(const Variant& v, const ModelRun& run, HandshakeTrace& t) {
     std::vector<RobotInput> in = run.inputs[k];
     if (v.protocol == Protocol::flag)
       for (std::size_t i = 0; i < in.size(); ++i)
-        for (double theta : heading_candidates(run.rp, in[i], s.x_desired_m[i], s.y_desired_m[i], s.ctrl[i].maneuver == 2)) {
+        for (double theta : heading_candidates(run.rp, in[i], s.x_desired_m[i], s.y_desired_m[i], s.ctrl[i])) {
           const exploration::ControllerState n = exploration::controller_step(
               run.rp, s.ctrl[i],
-              {{in[i].x_m, in[i].y_m, theta}, {s.x_desired_m[i], s.y_desired_m[i]}, s.env.on_destination_output});
+              {{in[i].x_m, in[i].y_m, theta}, {s.x_desired_m[i], s.y_desired_m[i]}, s.env.on_destination_output,
+               kHandshakeStep_s});
           if ((n.on_destination_output == 1) == run.out_after[k][i] && (n.maneuver == 2) == run.driving_after[k][i]) {
             in[i].theta_rad = theta;
             break;

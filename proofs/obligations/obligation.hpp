@@ -49,5 +49,6 @@ std::vector<Obligation> handshake_obligations();
 std::vector<Obligation> handshake_counter_obligations();
 std::vector<Obligation> pheromone_obligations();
 std::vector<Obligation> occupancy_obligations();
+std::vector<Obligation> orientation_obligations();
 
 }  // namespace swarmcheck::proofs

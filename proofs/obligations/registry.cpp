@@ -23,7 +23,8 @@ const std::vector<Obligation>& all_obligations() {
   static const std::vector<Obligation> all = [] {
     std::vector<Obligation> v;
     for (auto part : {servo_obligations, atan2_obligations, handshake_obligations,
-                      handshake_counter_obligations, pheromone_obligations, occupancy_obligations})
+                      handshake_counter_obligations, pheromone_obligations, occupancy_obligations,
+                      orientation_obligations})
       for (Obligation& o : part()) v.push_back(std::move(o));
     return v;
   }();

@@ -11,9 +11,11 @@ bool all_arrived(std::span<const ControllerState> controllers) {
 }
 
 StepRecord make_step_record(const EnvironmentState& env, uint64_t pheromone_digest,
-                            std::span<const ControllerState> controllers, std::span<const BodyState> bodies) {
+                            std::span<const ControllerState> controllers, std::span<const BodyState> bodies,
+                            std::span<const IntocpsBodyState> intocps) {
   SWARM_DEMAND(controllers.size() == env.robots.size());
   SWARM_DEMAND(bodies.size() == env.robots.size());
+  SWARM_DEMAND(intocps.empty() || intocps.size() == env.robots.size());
   StepRecord r;
   r.step = env.tick;
   r.planning_steps = env.planning_steps;
@@ -24,8 +26,10 @@ StepRecord make_step_record(const EnvironmentState& env, uint64_t pheromone_dige
   r.sTime = env.progress.sTime;
   r.pheromone_digest = pheromone_digest;
   r.robots.reserve(bodies.size());
-  for (std::size_t k = 0; k < bodies.size(); ++k)
-    r.robots.push_back(RobotRecord{env.robots[k].cell, env.robots[k].waypoint, bodies[k], controllers[k]});
+  for (std::size_t k = 0; k < bodies.size(); ++k) {
+    r.robots.push_back(RobotRecord{env.robots[k].cell, env.robots[k].waypoint, bodies[k], controllers[k], std::nullopt});
+    if (!intocps.empty()) r.robots.back().body_states = intocps[k];
+  }
   return r;
 }
 

@@ -44,7 +44,9 @@ void master_step(Mode mode, System& system) {
 }
 
 // The observable state after a step: one trace record (what impl and model must agree on).
+// `intocps` holds every robot's intocps body in index order, or nothing (kinematic bodies).
 StepRecord make_step_record(const EnvironmentState& env, uint64_t pheromone_digest,
-                            std::span<const ControllerState> controllers, std::span<const BodyState> bodies);
+                            std::span<const ControllerState> controllers, std::span<const BodyState> bodies,
+                            std::span<const IntocpsBodyState> intocps = {});
 
 }  // namespace swarmcheck::exploration

@@ -64,7 +64,7 @@ void validate_cross_params(const Params& p, Mode mode) {
   if (mode == Mode::cosim)
     require(p.step_size <= kCosimStepMax_s, "params.step_size",
             "at most " + fmt_num(kCosimStepMax_s) +
-                " s in cosim mode (the controller's turn loop is stable only for K k_beta dt < 2)",
+                " s in cosim mode (the controllers are checked to arrive on both bodies up to this step)",
             p.step_size);
   const double deposit = p.max_ph + p.epsilon / p.a2;
   require(deposit <= kDepositMax, "params",
@@ -190,6 +190,8 @@ Scenario default_scenario() {
   s.mode = Mode::cosim;
   s.seed = 1;
   s.max_steps = 100000;
+  s.controller = ControllerKind::swarmcheck;
+  s.body = BodyChoice{};
   return s;
 }
 
@@ -201,6 +203,7 @@ void validate_checks(const Scenario& s, bool cells) {
   validate_domains(s, DomainStage::params);
   validate_cross_params(s.params, s.mode);
   validate_domains(s, DomainStage::after_params);
+  validate_intocps_params(s.body.intocps);
 }
 }  // namespace
 
@@ -210,6 +213,8 @@ ValidScenario with_overrides(ValidScenario v, const ScenarioOverrides& o) {
   Scenario s = std::move(v).release();
   if (o.mode) s.mode = *o.mode;
   if (o.rule) s.rule = *o.rule;
+  if (o.controller) s.controller = *o.controller;
+  if (o.body) s.body.kind = *o.body;
   if (o.seed) s.seed = *o.seed;
   if (o.max_steps) s.max_steps = *o.max_steps;
   // The cells passed before and nothing they read changed: the first failing check, in order, is

@@ -18,7 +18,7 @@ namespace swarmcheck::exploration {
 inline constexpr int32_t kMapSizeMax = 65536;
 inline constexpr int32_t kRangeMax = 1 << 20;
 inline constexpr double kDepositMax = 1e12;      // max_ph + epsilon / a2
-inline constexpr double kCosimStepMax_s = 0.2;   // controller stability: K k_beta dt < 2
+inline constexpr double kCosimStepMax_s = 0.5;   // the controllers are checked to arrive up to this step
 inline constexpr int64_t kStepsMax = (int64_t{1} << 31) - 1;   // ~6.8 simulated years at 0.1 s
 inline constexpr int64_t kRobotsMax = int64_t{1} << 30;
 
@@ -31,11 +31,16 @@ Scenario default_scenario();
 
 // Throws InputError("<path>", what was expected) on the first problem, checked in key order.
 void validate(const Scenario& s);
+// The intocps body's parameters (body_choice.cpp): finite, physical, and no mode faster than RK4
+// at 1 ms can follow. Throws InputError("body.parameters.<name>", ...).
+void validate_intocps_params(const IntocpsBodyParams& p);
 
 // A run's command-line overrides of a scenario's keys (each if given).
 struct ScenarioOverrides {
   std::optional<Mode> mode;
   std::optional<RuleSet> rule;
+  std::optional<ControllerKind> controller;
+  std::optional<BodyKind> body;   // the intocps body keeps the scenario's parameters
   std::optional<uint64_t> seed;
   std::optional<int64_t> max_steps;
 };

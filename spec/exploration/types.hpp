@@ -7,10 +7,14 @@
 #include <array>
 #include <boost/hana.hpp>
 #include <cstdint>
+#include <optional>
+#include <string>
 #include <string_view>
 #include <utility>
 #include <vector>
 
+#include "spec/exploration/body_intocps.hpp"
+#include "spec/exploration/robot_kinds.hpp"
 #include "spec/exploration/rule_set.hpp"
 #include "spec/util/hana_json.hpp"
 
@@ -37,6 +41,15 @@ struct Params {
       (double, step_size));   // master step, s, > 0
 };
 
+// Which body every robot has, with the intocps body's parameters (read only when kind is
+// intocps). Scenario files spell it "kinematic", "intocps" or {"kind": "intocps", "parameters":
+// {FMU name: value}}; initial_position[0..1] of each robot is its entry in `robots`.
+struct BodyChoice {
+  BodyKind kind = BodyKind::kinematic;
+  IntocpsBodyParams intocps = scenario_intocps_params();
+  bool operator==(const BodyChoice&) const = default;
+};
+
 // A run's input: the scenario file's keys, exactly.
 struct Scenario {
   BOOST_HANA_DEFINE_STRUCT(Scenario,
@@ -48,7 +61,9 @@ struct Scenario {
       (RuleSet, rule),
       (Mode, mode),
       (uint64_t, seed),                    // the one seed of the run (stochastic rule)
-      (int64_t, max_steps));               // master steps at most
+      (int64_t, max_steps),                // master steps at most
+      (ControllerKind, controller),        // every robot's controller (cosim mode)
+      (BodyChoice, body));                 // every robot's body (cosim mode)
 };
 
 // Robot hardware and controller gains: fixed constants of the spec (not scenario keys).
@@ -61,6 +76,10 @@ struct RobotParams {
   double tolerance_m = 0.05;              // arrival: |dx| + |dy| < tolerance; atan2 deadband
   double orient_tolerance_rad = 0.01;     // maneuver 1 ends when |beta| < this
   double reorient_rad = 0.2;              // maneuver 2 falls back to 1 when |beta| > this
+  // The turn and approach gains are capped so that K gain dt <= loop_gain: with the master's
+  // one-step delay the error then follows e(k+2) = e(k+1) - loop_gain e(k), a double root 1/2 at
+  // 1/4 (no overshoot, SPEC.md section 8), whatever the step.
+  double loop_gain = 0.25;
 };
 
 // One cell of the grid. The pheromone is stored as the value written at `pheromone_tick`;
@@ -88,7 +107,8 @@ struct ControllerState {
       (int32_t, on_destination_output),   // 1: at its waypoint and idle
       (double, beta_rad),
       (double, servo_left),               // in [-1, 1]
-      (double, servo_right));             // in [-1, 1]
+      (double, servo_right),              // in [-1, 1]
+      (double, target_theta_rad));        // the heading maneuver 1 turns to, chosen when it began
 };
 
 // Body state = its outputs (pose). Forward is (-sin theta, cos theta).
@@ -111,8 +131,9 @@ struct RobotRecord {
   BOOST_HANA_DEFINE_STRUCT(RobotRecord,
       (CellIndex, cell),
       (Point_m, waypoint),
-      (BodyState, body),
-      (ControllerState, controller));
+      (BodyState, body),                                  // the pose its controller reads
+      (ControllerState, controller),
+      (std::optional<IntocpsBodyState>, body_states));    // the intocps body's whole memory
 };
 
 struct StepRecord {
@@ -131,6 +152,16 @@ struct StepRecord {
 }  // namespace swarmcheck::exploration
 
 namespace swarmcheck::json_io {
+template <>
+struct JsonCodec<exploration::BodyChoice> {
+  static Json write(const exploration::BodyChoice& b);
+  static void read(const Json& j, const std::string& path, exploration::BodyChoice& out);
+};
+template <>
+struct OmitWhenDefault<exploration::BodyChoice> : std::true_type {};
+template <>
+struct OmitWhenDefault<std::optional<exploration::IntocpsBodyState>> : std::true_type {};
+
 template <>
 struct EnumNames<exploration::Mode> {
   static constexpr std::array<std::pair<exploration::Mode, std::string_view>, 2> names{{

@@ -76,8 +76,9 @@ std::optional<FieldDiff> first_difference(const T& a, const T& b, const std::str
       if (auto d = first_difference(a[i], b[i], path + "[" + std::to_string(i) + "]")) return d;
     return std::nullopt;
   } else if constexpr (IsOptional<T>::value) {
-    if (a.has_value() != b.has_value() || (a && !same_bits(*a, *b)))
+    if (a.has_value() != b.has_value())
       return FieldDiff{path, a ? value_text(*a) : "null", b ? value_text(*b) : "null"};
+    if (a) return first_difference(*a, *b, path);
     return std::nullopt;
   } else {
     if (same_bits(a, b)) return std::nullopt;

@@ -50,6 +50,19 @@ inline std::string string_member(const Json& o, const char* key) {
 template <class E>
 struct EnumNames;
 
+// A type with its own JSON form: specialise with
+//   static Json write(const T&);  static void read(const Json&, const std::string& path, T&);
+template <class T>
+struct JsonCodec;
+template <class T>
+concept HasJsonCodec = requires(const T& v) { JsonCodec<T>::write(v); };
+
+// A struct member of type T is left out of its object when it equals T{} (specialise as
+// std::true_type): keys added to a format later stay out of files that do not use them, so those
+// files keep their bytes.
+template <class T>
+struct OmitWhenDefault : std::false_type {};
+
 template <class T>
 struct IsVector : std::false_type {};
 template <class T>
@@ -116,11 +129,21 @@ void from_json(const Json& j, const std::string& path, T& out);
 
 template <class T>
 Json to_json(const T& v) {
-  if constexpr (is_hana_struct<T>) {
+  if constexpr (HasJsonCodec<T>) {
+    return JsonCodec<T>::write(v);
+  } else if constexpr (is_hana_struct<T>) {
     Json o = Json::object();
     boost::hana::for_each(boost::hana::accessors<T>(), [&](auto pair) {
-      o[boost::hana::to<const char*>(boost::hana::first(pair))] =
-          to_json(boost::hana::second(pair)(v));
+      const auto& member = boost::hana::second(pair)(v);
+      using Member = std::decay_t<decltype(member)>;
+      if constexpr (OmitWhenDefault<Member>::value) {
+        if constexpr (IsOptional<Member>::value) {
+          if (!member.has_value()) return;
+        } else {
+          if (member == Member{}) return;
+        }
+      }
+      o[boost::hana::to<const char*>(boost::hana::first(pair))] = to_json(member);
     });
     return o;
   } else if constexpr (std::is_enum_v<T>) {
@@ -183,7 +206,9 @@ void struct_from_json(const Json& j, const std::string& path, T& out) {
 
 template <class T>
 void from_json(const Json& j, const std::string& path, T& out) {
-  if constexpr (is_hana_struct<T>) {
+  if constexpr (HasJsonCodec<T>) {
+    JsonCodec<T>::read(j, path, out);
+  } else if constexpr (is_hana_struct<T>) {
     struct_from_json(j, path, out);
   } else if constexpr (std::is_same_v<T, bool>) {
     if (!j.is_boolean()) throw InputError(path, "expected a boolean, got " + type_name(j));
@@ -236,12 +261,15 @@ std::vector<std::string> field_names() {
 
 template <class T>
 void require_complete(const Json& j, const std::string& path) {
-  if constexpr (is_hana_struct<T>) {
+  if constexpr (HasJsonCodec<T>) {
+    return;   // its codec reads it whole or refuses it
+  } else if constexpr (is_hana_struct<T>) {
     if (!j.is_object()) return;   // from_json names the wrong type
     boost::hana::for_each(boost::hana::accessors<T>(), [&](auto pair) {
       const char* name = boost::hana::to<const char*>(boost::hana::first(pair));
       using Member = std::decay_t<decltype(boost::hana::second(pair)(std::declval<T&>()))>;
       const auto it = j.find(name);
+      if (it == j.end() && OmitWhenDefault<Member>::value) return;   // left out: the default
       if (it == j.end()) throw InputError(join_key(path, name), "missing (a record must have every field)");
       require_complete<Member>(*it, join_key(path, name));
     });

@@ -114,7 +114,7 @@ TEST(RunVerb, OverridesAreValidatedToo) {
   EXPECT_EQ(sh("run " + file + " --json").status, 0);
   const Result r = sh("run " + file + " --mode cosim");
   EXPECT_EQ(r.status, 2);
-  EXPECT_NE(r.out.find(file + " with the command-line overrides: params.step_size: expected at most 0.2 s in cosim mode"),
+  EXPECT_NE(r.out.find(file + " with the command-line overrides: params.step_size: expected at most 0.5 s in cosim mode"),
             std::string::npos) << r.out;
   // The cells are checked on loading, before any override.
   const std::string taken = write(d / "taken.json", R"({"map_size": 4, "robots": [[0.5, 0.5], [0.7, 0.2]]})");

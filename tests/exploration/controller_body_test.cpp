@@ -55,8 +55,9 @@ RC_GTEST_PROP(Servo, ControllerServosAreInUnitRangeForEveryDoubleInput, ()) {
   ControllerState s = initial_controller();
   s.on_destination_output = 0;
   s.maneuver = *rc::gen::element(1, 2);
+  s.target_theta_rad = *any_double();
   const ControllerInputs in{BodyState{*any_double(), *any_double(), *any_double()},
-                            Point_m{*any_double(), *any_double()}, 0};
+                            Point_m{*any_double(), *any_double()}, 0, *rc::gen::element(0.05, 0.1, 0.5, 1e-300, 1e300)};
   const ControllerState n = controller_step(RobotParams{}, s, in);
   RC_ASSERT(n.servo_left >= -1.0);
   RC_ASSERT(n.servo_left <= 1.0);
@@ -73,35 +74,65 @@ TEST(Angle, WrapIsInHalfOpenIntervalMinusPiToPi) {
 
 TEST(Controller, IdleControllerAcceptsANewWaypointByLoweringItsOutput) {
   const ControllerState idle = initial_controller();
-  const ControllerInputs in{BodyState{0.5, 0.5, 0}, Point_m{1.5, 0.5}, 1};
+  const ControllerInputs in{BodyState{0.5, 0.5, 0}, Point_m{1.5, 0.5}, 1, 0.1};
   const ControllerState n = controller_step(RobotParams{}, idle, in);
   EXPECT_EQ(n.on_destination_output, 0);
   EXPECT_EQ(n.maneuver, 1);
   EXPECT_EQ(n.servo_left, 0.0);
+  // It chose the heading to turn to: the waypoint is +x, and theta = -pi/2 faces +x.
+  EXPECT_DOUBLE_EQ(n.target_theta_rad, -kPi / 2);
   // Without the Environment's signal it stays idle.
-  EXPECT_EQ(controller_step(RobotParams{}, idle, {in.pose, in.waypoint, 0}).on_destination_output, 1);
+  EXPECT_EQ(controller_step(RobotParams{}, idle, {in.pose, in.waypoint, 0, 0.1}).on_destination_output, 1);
 }
 
 TEST(Controller, ArrivalRaisesTheOutputAndStops) {
   ControllerState moving = initial_controller();
   moving.on_destination_output = 0;
   moving.maneuver = 2;
-  const ControllerInputs in{BodyState{1.49, 0.51, 0}, Point_m{1.5, 0.5}, 0};
+  const ControllerInputs in{BodyState{1.49, 0.51, 0}, Point_m{1.5, 0.5}, 0, 0.1};
   const ControllerState n = controller_step(RobotParams{}, moving, in);
   EXPECT_EQ(n.on_destination_output, 1);
   EXPECT_EQ(n.maneuver, 1);
   EXPECT_EQ(n.servo_right, 0.0);
 }
 
-TEST(Controller, Atan2FixZeroesADeltaInsideTheDeadband) {
+TEST(Controller, OrientingTurnsToTheHeadingChosenWhenItBeganWhereverThePoseReads) {
+  // The stall on the 20-sim body: the reported point, 1.85 cm ahead of the axle, circles the axle
+  // as the robot turns in place; a target recomputed from it flipped between two bearings.
   ControllerState s = initial_controller();
   s.on_destination_output = 0;
-  // Target straight to -x (heading pi/2 means theta = 0 faces +y, so -x is theta = pi/2).
-  // A jitter of 1e-9 in y would flip atan2 between +pi and -pi without the fix.
-  const ControllerState up = controller_step(RobotParams{}, s, {BodyState{1.5, 0.5 + 1e-9, kPi / 2}, {0.5, 0.5}, 0});
-  const ControllerState down = controller_step(RobotParams{}, s, {BodyState{1.5, 0.5 - 1e-9, kPi / 2}, {0.5, 0.5}, 0});
-  EXPECT_EQ(up.beta_rad, down.beta_rad);
-  EXPECT_EQ(up.maneuver, 2);   // already facing the target: beta = 0
+  s.target_theta_rad = 0.3;
+  for (const BodyState pose : {BodyState{5.95, 5.937, -0.25}, BodyState{5.9475, 5.9372, -0.25}, BodyState{9, 9, -0.25}}) {
+    const ControllerState n = controller_step(RobotParams{}, s, {pose, {6.0, 6.0}, 0, 0.1});
+    EXPECT_EQ(n.beta_rad, 0.3 - -0.25);
+    EXPECT_EQ(n.target_theta_rad, 0.3);
+    EXPECT_EQ(n.maneuver, 1);
+  }
+}
+
+TEST(Controller, DrivingTooFarOffTheBearingTurnsAgainTowardsATargetChosenThen) {
+  ControllerState s = initial_controller();
+  s.on_destination_output = 0;
+  s.maneuver = 2;
+  // The waypoint is straight behind (-y) a robot facing +y (theta 0): beta = pi > reorient.
+  const ControllerState n = controller_step(RobotParams{}, s, {BodyState{1.5, 1.5, 0.0}, {1.5, 0.5}, 0, 0.1});
+  EXPECT_EQ(n.maneuver, 1);
+  EXPECT_DOUBLE_EQ(std::fabs(n.target_theta_rad), kPi);
+  EXPECT_EQ(n.beta_rad, n.target_theta_rad - 0.0);
+}
+
+TEST(Controller, TheTurnGainIsCappedSoThatTheDelayedLoopGainIsAQuarter) {
+  // K k dt <= 1/4: at 0.5 s the turn command is 0.25 / (5.18 * 0.5) of beta, not k_beta = 1.
+  ControllerState s = initial_controller();
+  s.on_destination_output = 0;
+  s.target_theta_rad = 0.1;   // a small turn, unsaturated
+  const RobotParams rp;
+  for (const double dt : {0.05, 0.1, 0.5}) {
+    const ControllerState n = controller_step(rp, s, {BodyState{1, 1, 0}, {1, 3}, 0, dt});
+    const double k = std::min(rp.k_beta, rp.loop_gain / (rp.motor_gain_rad_per_s * dt));
+    const double w = -k * 0.1;
+    EXPECT_EQ(n.servo_left, (2 * rp.half_axle_m / (2 * rp.wheel_radius_m)) * w) << dt;
+  }
 }
 
 TEST(Body, FullForwardDrivesAlongMinusSinCos) {
@@ -145,7 +176,7 @@ RC_GTEST_PROP(ClosedLoop, ControllerBringsBodyWithinToleranceOfAnyWaypointInBoun
   for (int64_t k = 0; k < steps_max && ctrl.on_destination_output == 0; ++k) {
     const ControllerState before = ctrl;
     seen = body;
-    ctrl = controller_step(rp, before, {body, wp, 0});
+    ctrl = controller_step(rp, before, {body, wp, 0, 0.1});
     body = body_step(rp, body, before.servo_left, before.servo_right, 0.1);
   }
   RC_ASSERT(ctrl.on_destination_output == 1);

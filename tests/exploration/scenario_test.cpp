@@ -51,7 +51,7 @@ TEST(Scenario, EveryBadInputNamesItsPathAndWhatWasExpected) {
   EXPECT_EQ(error_of("[1]"), "s.json: (top level): expected an object");
   EXPECT_EQ(error_of(R"({"map_size": 4, "robots": [[0.5, 0.5]], "colour": 1})"),
             "s.json: colour: unknown key (expected one of: map_size, cell_size, robots, "
-            "obstacles, params, rule, mode, seed, max_steps)");
+            "obstacles, params, rule, mode, seed, max_steps, controller, body)");
   EXPECT_EQ(error_of(R"({"map_size": "4", "robots": []})"),
             "s.json: map_size: expected an integer, got a string");
   EXPECT_EQ(error_of(R"({"map_size": 0, "robots": [[0.5, 0.5]]})"),
@@ -74,9 +74,16 @@ TEST(Scenario, EveryBadInputNamesItsPathAndWhatWasExpected) {
             "s.json: params.s_range: expected an integer in [1, 1048576], got 0");
   EXPECT_EQ(error_of(R"({"map_size": 4, "robots": [[0.5, 0.5]], "rule": "greedy"})"),
             "s.json: rule: expected one of thesis|deterministic|stochastic, got \"greedy\"");
-  EXPECT_EQ(error_of(R"({"map_size": 4, "robots": [[0.5, 0.5]], "params": {"step_size": 0.5}})"),
-            "s.json: params.step_size: expected at most 0.2 s in cosim mode (the "
-            "controller's turn loop is stable only for K k_beta dt < 2), got 0.5");
+  EXPECT_EQ(error_of(R"({"map_size": 4, "robots": [[0.5, 0.5]], "params": {"step_size": 0.6}})"),
+            "s.json: params.step_size: expected at most 0.5 s in cosim mode (the "
+            "controllers are checked to arrive on both bodies up to this step), got 0.6");
+  EXPECT_EQ(error_of(R"({"map_size": 4, "robots": [[0.5, 0.5]], "controller": "pid"})"),
+            "s.json: controller: expected one of swarmcheck|thesis, got \"pid\"");
+  EXPECT_EQ(error_of(R"({"map_size": 4, "robots": [[0.5, 0.5]], "body": {"kind": "intocps", "parameters": {"mu": -1}}})"),
+            "s.json: body.parameters.mu: expected a number >= 0, got -1");
+  EXPECT_EQ(error_of(R"({"map_size": 4, "robots": [[0.5, 0.5]], "body": {"kind": "intocps", "parameters": {"initial_position[1]": 2}}})"),
+            "s.json: body.parameters.initial_position[1]: a robot's position is its entry in robots; only "
+            "initial_position[2] (the heading) is a body parameter");
   EXPECT_EQ(error_of(R"({"map_size": 4, "robots": [[0.5, 0.5]], "seed": -1})"),
             "s.json: seed: expected a non-negative integer, got -1");
   EXPECT_EQ(error_of(R"({"map_size": 4, "robots": [[0.5, 0.5]], "max_steps": 2147483648})"),

@@ -62,7 +62,7 @@ TEST(FmiCli, ExportWritesTheThreeFmusAndCosimRunsTheThesisMultiModelToCompletion
   ASSERT_EQ(r.status, 0) << r.out;
   const Json summary = Json::parse(r.out);
   EXPECT_EQ(summary["eP"], 100.0);
-  EXPECT_EQ(summary["completion_step"], 24410);
+  EXPECT_EQ(summary["completion_step"], 10237);
   EXPECT_EQ(summary["handshake"], "held");
   std::ifstream in(csv);
   std::string header;

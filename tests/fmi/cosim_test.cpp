@@ -108,8 +108,11 @@ TEST(FmiCosim, JacobiFmuCosimulationUnderTheThesisRuleSetIsTheLibraryRunBitForBi
 TEST(FmiCosim, GaussSeidelBreaksTheFlagHandshakeAndTheEpochHandshakeHoldsAndCompletes) {
   const auto flag = swarmcheck::testing::fmi_scratch("gs-flag");
   const auto epoch = swarmcheck::testing::fmi_scratch("gs-epoch");
-  fmi::write_intocps(exploration::default_scenario(), fmi::Handshake::flag, flag.string());
-  fmi::write_intocps(exploration::default_scenario(), fmi::Handshake::epoch, epoch.string());
+  // Long enough for the Gauss-Seidel order to complete too (the exported end time is the Jacobi
+  // library run's completion, 1023.7 s; Gauss-Seidel's epoch run takes longer).
+  constexpr double kEnd_s = 3000.0;
+  fmi::write_intocps(exploration::default_scenario(), fmi::Handshake::flag, flag.string(), kEnd_s);
+  fmi::write_intocps(exploration::default_scenario(), fmi::Handshake::epoch, epoch.string(), kEnd_s);
   double eP = 0;
   EXPECT_EQ(stale_acceptances(flag, fm::Algorithm::jacobi, eP), 0);
   EXPECT_EQ(eP, 100.0);

@@ -21,7 +21,7 @@ const bool kSeededProofsAtan2Test = [] { return ::setenv("RC_PARAMS", "seed=17",
 double beta_at(double x, double y, double theta) {
   exploration::ControllerState s = exploration::initial_controller();
   s.on_destination_output = 0;   // busy, maneuver 1
-  const exploration::ControllerInputs in{{x, y, theta}, {0.5, 0.5}, 0};
+  const exploration::ControllerInputs in{{x, y, theta}, {0.5, 0.5}, 0, 0.1};
   return exploration::controller_step(exploration::RobotParams{}, s, in).beta_rad;
 }
 

@@ -59,7 +59,8 @@ RC_GTEST_PROP(ServoProof, ControllerServosStayInTheUnitRangeForAnyPoseAndWaypoin
   s.maneuver = *rc::gen::element(1, 2);
   const exploration::ControllerInputs in{{*any_double(), *any_double(), *any_double()},
                                          {*any_double(), *any_double()},
-                                         0};
+                                         0,
+                                         0.1};
   const exploration::ControllerState n = exploration::controller_step(rp, s, in);
   RC_ASSERT(in_unit_range(n.servo_left));
   RC_ASSERT(in_unit_range(n.servo_right));
