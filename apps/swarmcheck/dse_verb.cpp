@@ -16,6 +16,7 @@
 #include <thread>
 
 #include "apps/swarmcheck/mpi_pool.hpp"
+#include "apps/swarmcheck/robot_options.hpp"
 #include "apps/swarmcheck/stop_request.hpp"
 #include "apps/swarmcheck/verb.hpp"
 #include "impl/dse/format.hpp"
@@ -36,6 +37,7 @@ using Clock = std::chrono::steady_clock;
 struct DseArgs {
   std::string config_path;
   std::string scenario_path;   // empty: the built-in default
+  RobotChoiceOptions robots;   // --controller, --body, --preset over the base scenario
   std::string out_dir = "dse-out";
   int32_t threads = 0;         // 0: every core
   bool json = false;
@@ -186,8 +188,12 @@ struct Plan {
 };
 
 Plan load_plan(const DseArgs& a) {
-  Plan p{load_dse_config(a.config_path),
-         a.scenario_path.empty() ? exploration::default_scenario() : exploration::load_scenario(a.scenario_path)};
+  DseConfig config = load_dse_config(a.config_path);
+  exploration::ScenarioOverrides over;
+  apply_robot_choices(a.robots, "", over);
+  exploration::ValidScenario base = a.scenario_path.empty() ? exploration::ValidScenario(exploration::default_scenario())
+                                                            : exploration::load_valid_scenario(a.scenario_path);
+  Plan p{std::move(config), exploration::with_overrides(std::move(base), over).get()};
   if (a.threads < 0) throw InputError("--threads", "expected an integer >= 0 (0: every core)");
   return p;
 }
@@ -291,6 +297,7 @@ void add_dse_verb(CLI::App& app, int& exit_code) {
       "dse", "Design-space exploration on an INTO-CPS DSE configuration (.dse.json): sweep, rank, report");
   cmd->add_option("config", a->config_path, "The DSE configuration (INTO-CPS format; see README)")->required();
   cmd->add_option("--scenario", a->scenario_path, "The base scenario the parameters change (default: the built-in one)");
+  add_robot_options(cmd, a->robots);
   cmd->add_option("-o,--out", a->out_dir, "Folder for results.csv, results.json, report.html, report.svg, journal.jsonl")
       ->capture_default_str();
   add_threads_option(cmd, a->threads, "Design points in parallel");

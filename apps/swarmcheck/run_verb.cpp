@@ -9,6 +9,7 @@
 #include <optional>
 
 #include "impl/io/atomic_file.hpp"
+#include "apps/swarmcheck/robot_options.hpp"
 #include "apps/swarmcheck/verb.hpp"
 #include "conformance/exploration/engine.hpp"
 #include "conformance/exploration/summary.hpp"
@@ -28,6 +29,7 @@ namespace cx = swarmcheck::conformance::exploration;
 struct ExplorationRunOptions {
   std::string scenario_path;   // empty: the built-in default
   std::string mode, rule;      // empty: as in the scenario
+  RobotChoiceOptions robots;
   std::optional<uint64_t> seed;
   std::optional<int64_t> steps;
   std::string trace_path;
@@ -54,7 +56,7 @@ ValidScenario resolve_scenario(const ExplorationRunOptions& o) {
   const std::string where = o.scenario_path.empty() ? "default scenario" : o.scenario_path;
   ScenarioOverrides over;
   if (!o.mode.empty()) over.mode = json_io::enum_from_string<Mode>(o.mode, "--mode");
-  if (!o.rule.empty()) over.rule = json_io::enum_from_string<RuleSet>(o.rule, "--rule");
+  apply_robot_choices(o.robots, o.rule, over);
   over.seed = o.seed;
   over.max_steps = o.steps;
   try {
@@ -102,10 +104,16 @@ void print_summary(const Scenario& s, const ExplorationRunOptions& o, const cx::
   const double eP = sim.eP(), sTime = sim.sTime();
   const int64_t steps = sim.steps(), planning_steps = sim.planning_steps(), visited = sim.visited(),
                 free_cells = sim.free_cells();
-  fmt::print("swarmcheck run: {} (map {}x{}, {} robots, {} obstacles), rule {}, mode {}, seed {}\n",
+  // The controller and body are named when they are not the defaults (they run in cosim mode only).
+  const bool robots_named = s.mode == Mode::cosim && (s.controller != ControllerKind::swarmcheck || s.body.kind != BodyKind::kinematic);
+  fmt::print("swarmcheck run: {} (map {}x{}, {} robots, {} obstacles), rule {}, mode {}{}, seed {}\n",
              o.scenario_path.empty() ? "default scenario" : o.scenario_path, s.map_size,
              s.map_size, s.robots.size(), s.obstacles.size(), json_io::enum_to_string(s.rule),
-             json_io::enum_to_string(s.mode), s.seed);
+             json_io::enum_to_string(s.mode),
+             robots_named ? fmt::format(", controller {}, body {}", json_io::enum_to_string(s.controller),
+                                        json_io::enum_to_string(s.body.kind))
+                          : std::string(),
+             s.seed);
   if (completion)
     fmt::print("completed at step {} (sTime {:.1f} s): eP {:.2f} %, {} / {} free cells visited, "
                "{} planning steps\n",
@@ -221,6 +229,7 @@ void add_run_verb(CLI::App& app, int& exit_code) {
   cmd->add_option("--rule", opts->rule,
                   "The rule set (overrides the file)")
       ->check(CLI::IsMember(rules));
+  add_robot_options(cmd, opts->robots);
   cmd->add_option("--seed", opts->seed, "The run's one seed (overrides the file)")->check(seed_validator());
   cmd->add_option("--steps", opts->steps, "Master steps at most (overrides max_steps)");
   cmd->add_option("--trace", opts->trace_path, "Write the JSON Lines trace to FILE");

@@ -167,7 +167,7 @@ TEST(DseVerb, BadInputExitsTwoWithThePathAndWritesNothing) {
       {R"({"algorithm": {"type": "genetic", "maxGenerationsWithoutImprovement": 0}, "parameters": {"a1": [1]}, )" + ok_objectives + "}",
        "c.json: algorithm.maxGenerationsWithoutImprovement: expected an integer in [1, 1000], got 0"},
       {R"({"parameters": {"mode": ["cosim"], "step_size": [18]}, )" + ok_objectives + "}",
-       "point mode=cosim, step_size=18: params.step_size: expected at most 0.2 s"},
+       "point mode=cosim, step_size=18: params.step_size: expected at most 0.5 s"},
   };
   for (const auto& [text, want] : cases) {
     const std::string config = write(d / "c.json", text);

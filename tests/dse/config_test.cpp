@@ -89,6 +89,8 @@ TEST(DseConfig, EveryBadInputNamesItsJsonPathAndWhatWasExpected) {
       {with("parameters", R"({"a1": []})"), "c.json: parameters[\"a1\"]: expected a non-empty list of values"},
       {with("parameters", R"({"rule": [1]})"), "c.json: parameters[\"rule\"][0]: expected a string"},
       {with("parameters", R"({"rule": ["fast"]})"), "c.json: parameters[\"rule\"][0]: expected one of thesis|deterministic|stochastic"},
+      {with("parameters", R"({"controller": ["pid"]})"), "c.json: parameters[\"controller\"][0]: expected one of swarmcheck|thesis"},
+      {with("parameters", R"({"body": ["rigid"]})"), "c.json: parameters[\"body\"][0]: expected one of kinematic|intocps"},
       {with("parameters", R"({"a1": [1, 1]})"), "c.json: parameters[\"a1\"][1]: repeats the value at [0]"},
       {with("parameters", R"({"s_range": [1.5]})"), "c.json: parameters[\"s_range\"][0]: expected an integer in [1, 1048576], got 1.5"},
       {with("parameters", R"({"ertu": [1], "ertu_perc": [2]})"), "c.json: parameters[\"ertu_perc\"]: sets the same thing as parameters[\"ertu\"]"},

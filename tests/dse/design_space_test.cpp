@@ -43,6 +43,20 @@ TEST(DesignSpace, TheFirstParameterVariesSlowest) {
   EXPECT_EQ(space.describe(space.genome_of(5)), "a1=2, rule=stochastic");
 }
 
+TEST(DesignSpace, ControllerAndBodyAreDesignParametersAndAnIntocpsBodyKeepsTheBaseParameters) {
+  const DseConfig c = config(R"({"controller": ["swarmcheck", "thesis"], "body": ["kinematic", "intocps"]})");
+  Scenario base = exploration::default_scenario();
+  base.body.intocps.mu = 0.25;   // set in the base scenario's body, kept when a point chooses intocps
+  const DesignSpace space(c, base);
+  EXPECT_EQ(space.size(), 4u);
+  const Scenario s = space.scenario(space.genome_of(3), 0);
+  EXPECT_EQ(s.controller, exploration::ControllerKind::thesis);
+  EXPECT_EQ(s.body.kind, exploration::BodyKind::intocps);
+  EXPECT_EQ(s.body.intocps.mu, 0.25);
+  EXPECT_EQ(space.scenario(space.genome_of(0), 0).body.kind, exploration::BodyKind::kinematic);
+  EXPECT_EQ(space.describe(space.genome_of(3)), "controller=thesis, body=intocps");
+}
+
 TEST(DesignSpace, ReplicateZeroIsTheScenarioItselfAndOthersHaveDistinctSeeds) {
   const DseConfig c = config(R"({"replicates": [4], "seed": [7]})");
   const DesignSpace space(c, exploration::default_scenario());
@@ -70,7 +84,7 @@ TEST(DesignSpace, BadCombinationsAreFoundBeforeAnythingRunsAndNameThePoint) {
     check_design_space(space);
     FAIL() << "cosim with step_size 18 was accepted";
   } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("point mode=cosim, step_size=18: params.step_size: expected at most 0.2 s"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("point mode=cosim, step_size=18: params.step_size: expected at most 0.5 s"), std::string::npos) << e.what();
   }
   const DseConfig crowded = config(R"({"nRobots": [200], "mapSize": [10]})");
   EXPECT_THROW(check_design_space(DesignSpace(crowded, exploration::default_scenario())), InputError);
