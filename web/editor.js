@@ -20,13 +20,13 @@ export function compactJson(value) {
 function inputFor(schema, path, value, onValue) {
   const d = schema;
   let input;
-  if (d.type === 'string' && d.enum) {
+  if ((d.type === 'string' || d.type === 'x-body') && d.enum) {
     input = el('select', { name: path }, ...d.enum.map((v) => el('option', { value: v, text: v, selected: v === value })));
   } else {
     input = el('input', { name: path, type: 'text', inputmode: 'decimal', value: String(value) });
   }
   const read = () => {
-    if (d.type === 'string') return input.value;
+    if (d.type === 'string' || d.type === 'x-body') return input.value;
     const t = input.value.trim();
     // A number that parses is a number; anything else stays text, which the validator reports
     // as the CLI would ("expected a number, got a string").
@@ -71,6 +71,14 @@ export class ScenarioEditor {
         for (const sub of props[key]['x-order']) {
           form.append(inputFor(props[key].properties[sub], `${key}.${sub}`, this.s[key][sub], (v) => { this.s[key][sub] = v; this.changed(); }));
         }
+      } else if (props[key].type === 'x-body') {
+        // The body's kind is chosen here; an intocps body's parameters, if the file set any, are
+        // kept (they are edited in the JSON: 45 of them would drown the form).
+        const kindOf = (b) => (b === undefined ? props[key].enum[0] : typeof b === 'string' ? b : b.kind);
+        form.append(inputFor(props[key], key, kindOf(this.s[key]), (v) => {
+          this.s[key] = typeof this.s[key] !== 'object' || v !== 'intocps' ? v : { ...this.s[key], kind: v };
+          this.changed();
+        }));
       } else {
         form.append(inputFor(props[key], key, this.s[key], (v) => {
           this.s[key] = v;

@@ -78,7 +78,9 @@ export class MapView {
     }
   }
 
-  // robots: [{x, y, theta, wx, wy, path: [[x, y]], waiting, label}]; heading when cosim.
+  // robots: [{x, y, theta, wx, wy, path: [[x, y]], waiting, label, axle}]; heading when cosim.
+  // With `axle` ([x, y]: the 20-sim body's axle midpoint) the robot is drawn there and (x, y), the
+  // point its body reports, as a dot in front of it.
   drawRobots(robots, cosim) {
     this.svg.replaceChildren();
     const r = Math.min(12, Math.max(3, this.cellPx * 0.3));
@@ -93,12 +95,17 @@ export class MapView {
         this.svg.append(svgEl('rect', { class: 'waypoint', x: this.px(b.wx) - 4, y: this.py(b.wy) - 4, width: 8, height: 8, fill: 'none', stroke: colour, 'stroke-width': 2 }));
       }
       const g = svgEl('g', { class: 'robot-group' });
-      if (b.waiting) g.append(svgEl('circle', { class: 'waiting', cx: this.px(b.x), cy: this.py(b.y), r: r + 5, fill: 'none', stroke: '#f59e0b', 'stroke-width': 3, 'stroke-dasharray': '4 2' }));
-      g.append(svgEl('circle', { class: 'robot', 'data-robot': k, cx: this.px(b.x), cy: this.py(b.y), r, fill: colour, stroke: '#111', 'stroke-width': 1.5 },
+      const [cx, cy] = b.axle ? b.axle : [b.x, b.y];
+      if (b.waiting) g.append(svgEl('circle', { class: 'waiting', cx: this.px(cx), cy: this.py(cy), r: r + 5, fill: 'none', stroke: '#f59e0b', 'stroke-width': 3, 'stroke-dasharray': '4 2' }));
+      g.append(svgEl('circle', { class: 'robot', 'data-robot': k, cx: this.px(cx), cy: this.py(cy), r, fill: colour, stroke: '#111', 'stroke-width': 1.5 },
         svgEl('title', { text: b.label || `robot ${k}` })));
       if (cosim && b.theta !== undefined) {
-        g.append(svgEl('line', { class: 'heading', x1: this.px(b.x), y1: this.py(b.y),
-          x2: this.px(b.x) - Math.sin(b.theta) * r * 1.6, y2: this.py(b.y) - Math.cos(b.theta) * r * 1.6, stroke: 'white', 'stroke-width': 2 }));
+        g.append(svgEl('line', { class: 'heading', x1: this.px(cx), y1: this.py(cy),
+          x2: this.px(cx) - Math.sin(b.theta) * r * 1.6, y2: this.py(cy) - Math.cos(b.theta) * r * 1.6, stroke: 'white', 'stroke-width': 2 }));
+      }
+      if (b.axle) {
+        g.append(svgEl('circle', { class: 'reported-point', cx: this.px(b.x), cy: this.py(b.y), r: Math.max(2, r * 0.3), fill: '#111' },
+          svgEl('title', { text: `robot ${k}: the point its body reports (axle at ${cx.toFixed(4)}, ${cy.toFixed(4)})` })));
       }
       if (b.label) g.append(svgEl('text', { x: this.px(b.x) + r + 2, y: this.py(b.y) - r, class: 'robot-label', text: b.label }));
       this.svg.append(g);

@@ -85,8 +85,95 @@ function read(schema, v, path, current) {
       if (!Array.isArray(v)) throw new ScenarioError(path, `expected a list, got ${typeName(v)}`);
       return v.map((x, i) => read(schema.items, x, `${path}[${i}]`, undefined));
     }
+    case 'x-body':
+      return readBody(schema, v, path);
     default:
       throw new Error(`schema type ${schema.type} not handled`);
+  }
+}
+
+// JsonCodec<BodyChoice>::read of spec/exploration/body_choice.cpp: a body's name, or
+// {"kind": name, "parameters": {Body_Block name: number}}; returns {kind, parameters} with every
+// parameter (the defaults where the file names none).
+function readBody(schema, v, path) {
+  const kinds = schema.enum.join('|');
+  const body = { kind: undefined, parameters: { ...schema['x-parameter-defaults'] } };
+  const kindOf = (k, at) => {
+    if (typeof k !== 'string') throw new ScenarioError(at, `expected one of ${kinds}, got ${typeName(k)}`);
+    if (!schema.enum.includes(k)) throw new ScenarioError(at, `expected one of ${kinds}, got "${k}"`);
+    return k;
+  };
+  if (typeof v === 'string') return { ...body, kind: kindOf(v, path) };
+  if (!isObject(v)) throw new ScenarioError(path, `expected ${kinds} or {"kind": ..., "parameters": {...}}, got ${typeName(v)}`);
+  for (const key of Object.keys(v)) {
+    if (key !== 'kind' && key !== 'parameters') throw new ScenarioError(joinKey(path, key), 'unknown key (expected one of: kind, parameters)');
+  }
+  if (!('kind' in v)) throw new ScenarioError(joinKey(path, 'kind'), `missing (${kinds})`);
+  body.kind = kindOf(v.kind, joinKey(path, 'kind'));
+  if ('parameters' in v) {
+    const at = joinKey(path, 'parameters');
+    const ps = v.parameters;
+    if (!isObject(ps)) throw new ScenarioError(at, `expected an object of the Body_Block's parameters, got ${typeName(ps)}`);
+    if (body.kind !== 'intocps' && Object.keys(ps).length > 0) {
+      throw new ScenarioError(at, `the ${body.kind} body has no parameters (the intocps body has)`);
+    }
+    for (const [name, value] of Object.entries(ps)) {
+      const key = joinKey(at, name);
+      if (!schema['x-parameters'].includes(name)) {
+        throw new ScenarioError(key, 'unknown parameter of the intocps body (its names are the Body_Block FMU\'s: ' +
+          'battery_initial_energy, axle_offset, mu, servo_left.resistance.r, ...; `swarmcheck run --help` lists them all)');
+      }
+      if (name === 'initial_position[0]' || name === 'initial_position[1]') {
+        throw new ScenarioError(key, 'a robot\'s position is its entry in robots; only initial_position[2] (the heading) is a body parameter');
+      }
+      if (typeof value !== 'number') throw new ScenarioError(key, `expected a number, got ${typeName(value)}`);
+      body.parameters[name] = value;
+    }
+  }
+  return body;
+}
+
+// validate_intocps_params of body_choice.cpp, in its order and with its arithmetic (the mass,
+// inertia and ground friction of intocps_body_model, operation for operation).
+function checkBody(schema, s) {
+  // Absent (the default) or a name: the default parameters.
+  const body = s.body === undefined || typeof s.body === 'string'
+    ? { parameters: schema.properties.body['x-parameter-defaults'] } : s.body;
+  const p = body.parameters;
+  const need = (ok, name, expected, got) => {
+    if (!ok) throw new ScenarioError(`body.parameters.${name}`, `expected ${expected}, got ${toChars(got)}`);
+  };
+  for (const name of schema.properties.body['x-parameters']) need(Number.isFinite(p[name]), name, 'a finite number', p[name]);
+  need(p.battery_initial_energy >= 0, 'battery_initial_energy', 'a number >= 0 (J)', p.battery_initial_energy);
+  need(p.axle_half_width > 0, 'axle_half_width', 'a number > 0 (m)', p.axle_half_width);
+  need(p.wheel_radius > 0, 'wheel_radius', 'a number > 0 (m)', p.wheel_radius);
+  need(p['body.R.bladePosition'] > 0, 'body.R.bladePosition', 'a number > 0 (m)', p['body.R.bladePosition']);
+  need(p.robot_mass_without_battery + p.battery_mass > 0, 'robot_mass_without_battery',
+    'a mass that with battery_mass is > 0 (kg)', p.robot_mass_without_battery);
+  need(p['encoder_left.Quantisize.lsb'] > 0, 'encoder_left.Quantisize.lsb', 'a number > 0', p['encoder_left.Quantisize.lsb']);
+  need(p['encoder_right.Quantisize.lsb'] > 0, 'encoder_right.Quantisize.lsb', 'a number > 0', p['encoder_right.Quantisize.lsb']);
+  need(p.mu >= 0, 'mu', 'a number >= 0', p.mu);
+  need(p['wheel_left.R.r'] >= 0, 'wheel_left.R.r', 'a number >= 0 (N s/m)', p['wheel_left.R.r']);
+  need(p['wheel_right.R2.r'] >= 0, 'wheel_right.R2.r', 'a number >= 0 (N s/m)', p['wheel_right.R2.r']);
+  const bm = p.battery_mass;
+  const inertia = p.robot_inertia_without_battery +
+    ((((bm / 12) * (p.battery_length * p.battery_length)) * (p.battery_width * p.battery_width)) +
+     bm * (p.battery_cog_offset * p.battery_cog_offset));
+  need(inertia > 0, 'robot_inertia_without_battery', 'an inertia that with the battery\'s is > 0', p.robot_inertia_without_battery);
+  const blade = p['body.R.bladePosition'];
+  const friction = ((p.robot_mass_without_battery * p.axle_offset) / blade) * p.mu + ((bm * p.battery_cog_offset) / blade) * p.mu;
+  const mass = 1.0 / (1.0 / (p.robot_mass_without_battery + bm));
+  const fastest = 0.5e-3;   // RK4 at 1 ms is stable for time constants above half a step
+  need(friction === 0 || mass / friction >= fastest, 'mu', 'a ground friction whose time constant mass / c is at least 0.5 ms (RK4 at 1 ms)', p.mu);
+  const damping = Math.max(p['wheel_left.R.r'], p['wheel_right.R2.r']);
+  need(damping === 0 || mass / (2 * damping) >= fastest, 'wheel_left.R.r', 'a lateral damping d with mass / (2 d) at least 0.5 ms (RK4 at 1 ms)', damping);
+  for (const side of ['servo_left', 'servo_right']) {
+    const q = (n) => p[`${side}.${n}`];
+    need(q('inductance.i') > 0, `${side}.inductance.i`, 'a number > 0 (H)', q('inductance.i'));
+    need(q('internal_controller.tauI') > 0, `${side}.internal_controller.tauI`, 'a number > 0 (s)', q('internal_controller.tauI'));
+    const r = q('resistance.r');
+    need(r >= 0 && (r === 0 || q('inductance.i') / r >= fastest), `${side}.resistance.r`, 'a resistance >= 0 with inductance / resistance at least 0.5 ms', r);
+    need(q('voltage_limit.minimum') <= q('voltage_limit.maximum'), `${side}.voltage_limit.minimum`, 'at most voltage_limit.maximum', q('voltage_limit.minimum'));
   }
 }
 
@@ -157,7 +244,7 @@ function checkCrossParams(schema, s) {
   const { cosim_step_max_s: stepMax, deposit_max: depositMax } = schema['x-limits'];
   const p = s.params;
   if (s.mode === 'cosim' && !(p.step_size <= stepMax)) {
-    throw new ScenarioError('params.step_size', `expected at most ${toChars(stepMax)} s in cosim mode (the controller's turn loop is stable only for K k_beta dt < 2), got ${toChars(p.step_size)}`);
+    throw new ScenarioError('params.step_size', `expected at most ${toChars(stepMax)} s in cosim mode (the controllers are checked to arrive on both bodies up to this step), got ${toChars(p.step_size)}`);
   }
   const deposit = p.max_ph + p.epsilon / p.a2;
   if (!(deposit <= depositMax)) {
@@ -180,6 +267,7 @@ export function validateScenario(schema, doc) {
     checkStage(schema, s, 'params');
     checkCrossParams(schema, s);
     checkStage(schema, s, 'after_params');
+    checkBody(schema, s);
     return null;
   } catch (e) {
     if (e instanceof ScenarioError) return { path: e.path, message: e.message };

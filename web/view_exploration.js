@@ -33,7 +33,13 @@ export function robotsAt(data, index, withPaths) {
       path = [];
       for (let k = 0; k <= index; ++k) path.push(abstract ? [(r.ci[k] + 0.5) * cell, (r.cj[k] + 0.5) * cell] : [r.x[k], r.y[k]]);
     }
-    return { x: pose[0], y: pose[1], theta: r.theta[index], wx: r.wx[index], wy: r.wy[index], path };
+    const robot = { x: pose[0], y: pose[1], theta: r.theta[index], wx: r.wx[index], wy: r.wy[index], path };
+    // The intocps body's reported point is axle_offset ahead of the axle (forward (-sin, cos)).
+    if (data.axle_offset !== undefined && !abstract) {
+      const a = data.axle_offset, th = r.theta[index];
+      robot.axle = [pose[0] + a * Math.sin(th), pose[1] - a * Math.cos(th)];
+    }
+    return robot;
   });
 }
 
