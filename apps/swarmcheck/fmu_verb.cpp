@@ -11,6 +11,7 @@
 
 #include "apps/swarmcheck/verb.hpp"
 #include "fmi/export/fmu_export.hpp"
+#include "impl/io/atomic_file.hpp"
 #include "spec/exploration/scenario.hpp"
 
 namespace swarmcheck::cli {
@@ -23,6 +24,7 @@ struct FmuExportOptions {
   std::string output;
   std::string intocps;
   std::string handshake = "flag";
+  std::string interface = "swarmcheck";
 };
 
 int fmu_export(const FmuExportOptions& o) {
@@ -31,9 +33,17 @@ int fmu_export(const FmuExportOptions& o) {
     throw InputError("fmu export", "give a kind (environment, controller or body) with -o FILE.fmu, or --intocps DIR");
   if (!o.kind.empty() && o.output.empty()) throw InputError("fmu export", "-o FILE.fmu is required with a kind");
   if (!o.intocps.empty() && !o.output.empty()) throw InputError("fmu export", "-o goes with a kind; --intocps writes its own files");
-  ex::Scenario s = o.scenario_path.empty() ? ex::default_scenario() : ex::load_scenario(o.scenario_path);
+  const fmi::Interface interface = o.interface == "thesis" ? fmi::Interface::thesis : fmi::Interface::swarmcheck;
+  // The thesis interface stands in for the thesis's own FMUs: their start values and rule set
+  // unless a scenario says otherwise.
+  ex::Scenario s = !o.scenario_path.empty()                 ? ex::load_scenario(o.scenario_path)
+                   : interface == fmi::Interface::thesis ? fmi::thesis_interface_scenario()
+                                                          : ex::default_scenario();
   if (o.robots) s = fmi::scenario_with_robots(s, *o.robots);
   if (!o.intocps.empty()) {
+    if (interface == fmi::Interface::thesis)
+      throw InputError("--interface thesis", "--intocps writes swarmcheck's multi-model; the thesis interface exports "
+                                             "one FMU at a time (environment) so far");
     for (const char* name : {"Environment.fmu", "Controller.fmu", "Body.fmu", "multimodel.json", "coe.json"})
       io::refuse_output_that_is_an_input((std::filesystem::path(o.intocps) / name).string(), {o.scenario_path});
     fmi::write_intocps(s, o.handshake == "epoch" ? fmi::Handshake::epoch : fmi::Handshake::flag, o.intocps);
@@ -46,8 +56,8 @@ int fmu_export(const FmuExportOptions& o) {
                          : o.kind == "controller" ? fmi::Kind::controller
                                                   : fmi::Kind::body;
   io::refuse_output_that_is_an_input(o.output, {o.scenario_path});
-  fmi::write_fmu(fmi::fmu_setup(kind, s), o.output);
-  fmt::print("wrote {} ({}, FMI 2.0 co-simulation{})\n", o.output, fmi::model_identifier(kind),
+  fmi::write_fmu(fmi::fmu_setup(kind, s, interface), o.output);
+  fmt::print("wrote {} ({}, FMI 2.0 co-simulation, {} interface{})\n", o.output, fmi::model_identifier(kind), o.interface,
              kind == fmi::Kind::environment ? fmt::format(", {} robots, {} obstacle cells", s.robots.size(), s.obstacles.size())
                                             : std::string());
   return 0;
@@ -71,6 +81,12 @@ void add_fmu_verb(CLI::App& app, int& exit_code) {
                   "has N, else N spread over its free cells");
   cmd->add_option("--intocps", opts->intocps,
                   "Write Environment.fmu, Controller.fmu, Body.fmu, multimodel.json and coe.json into DIR");
+  cmd->add_option("--interface", opts->interface,
+                  "swarmcheck (its variables) | thesis (the variables, Real handshake and file names of thesis A's "
+                  "published FMUs, to drop into its INTO-CPS project; their start values and rule set thesis unless "
+                  "--scenario says)")
+      ->check(CLI::IsMember({"swarmcheck", "thesis"}))
+      ->capture_default_str();
   cmd->add_option("--handshake", opts->handshake, "flag (the thesis's) | epoch, for --intocps")
       ->check(CLI::IsMember({"flag", "epoch"}))
       ->capture_default_str();

@@ -52,6 +52,10 @@ std::string zip_bytes(const std::vector<Entry>& entries) {
       throw std::runtime_error("libzip: cannot add " + e.name + ": " + why);
     }
     zip_file_set_mtime(archive, static_cast<zip_uint64_t>(index), kEntryTime, 0);
+    // Stored as a Unix file, -rw-r--r-- (libzip's default leaves the mode to the unpacking tool,
+    // which on Linux gives 0666 less its umask, or 0666 as is).
+    zip_file_set_external_attributes(archive, static_cast<zip_uint64_t>(index), 0, ZIP_OPSYS_UNIX,
+                                     static_cast<zip_uint32_t>(0100644) << 16);
   }
   if (zip_close(archive) != 0) {
     const std::string why = zip_strerror(archive);
@@ -100,17 +104,44 @@ ex::Scenario scenario_with_robots(const ex::Scenario& s, int32_t n) {
   return out;
 }
 
-FmuSetup fmu_setup(Kind kind, const ex::Scenario& s) {
+ex::Scenario thesis_interface_scenario() {
+  ex::Scenario s = ex::default_scenario();
+  s.map_size = 10;
+  s.robots = {{0.5, 0.5}, {9.5, 0.5}, {9.5, 9.5}, {0.5, 9.5}};
+  s.obstacles = {{3, 1}, {4, 1}, {2, 9}, {5, 4}, {5, 5}, {7, 8}, {8, 8}, {8, 9}};
+  s.params.a1 = 0.5;
+  s.params.a2 = 0.5;
+  s.params.ertu = 0.002;
+  s.params.eta = 0.9;
+  s.params.lambda = 1;
+  s.params.max_ph = 2;
+  s.params.phi = 1;
+  s.params.s_range = 1;
+  s.params.step_size = 0.1;
+  s.rule = ex::RuleSet::thesis;
+  ex::validate(s);
+  return s;
+}
+
+FmuSetup fmu_setup(Kind kind, const ex::Scenario& s, Interface interface) {
   if (s.seed > static_cast<uint64_t>(INT32_MAX))
     throw InputError("seed", "the FMU's seed parameter is an FMI Integer: expected at most 2147483647, got " +
                                  std::to_string(s.seed));
+  if (interface == Interface::thesis && kind != Kind::environment)
+    throw InputError("--interface thesis",
+                     std::string("the thesis interface's ") + (kind == Kind::controller ? "Controller" : "Body") +
+                         " runs the thesis's " + (kind == Kind::controller ? "controller" : "20-sim body") +
+                         ", which swarmcheck's spec does not have yet: only its Environment can be exported");
   FmuSetup setup;
   setup.kind = kind;
+  setup.interface = interface;
   setup.scenario = s;
   setup.scenario.mode = ex::Mode::cosim;
   if (kind == Kind::environment) {
+    constexpr int32_t kThesisObstacleSlots = 10;   // ox_1..ox_10 in the thesis's Environment
     setup.robots = static_cast<int32_t>(s.robots.size());
     setup.obstacles = static_cast<int32_t>(s.obstacles.size());
+    if (interface == Interface::thesis) setup.obstacles = std::max(setup.obstacles, kThesisObstacleSlots);
   }
   return setup;
 }

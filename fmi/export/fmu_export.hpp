@@ -19,8 +19,15 @@ namespace swarmcheck::fmi {
 // InputError when n < 1 or n > F.
 exploration::Scenario scenario_with_robots(const exploration::Scenario& s, int32_t n);
 
-// The setup of an FMU of `kind` for scenario s (the Environment's robots and obstacles are s's).
-FmuSetup fmu_setup(Kind kind, const exploration::Scenario& s);
+// The scenario whose values the thesis interface's Environment takes as start values by default:
+// the thesis Environment FMU's own (its modelDescription.xml: 4 robots at the corners of a
+// 10-cell map, ertu_perc 0.002, ...), rule set thesis; of its 10 obstacle cells the last two
+// (both cell (0, 0), under robot 1) are left out, so 8 take part and the FMU has 10 slots.
+exploration::Scenario thesis_interface_scenario();
+
+// The setup of an FMU of `kind` for scenario s (the Environment's robots and obstacles are s's;
+// the thesis interface's Environment has at least the thesis's 10 obstacle slots).
+FmuSetup fmu_setup(Kind kind, const exploration::Scenario& s, Interface interface = Interface::swarmcheck);
 
 // The bytes of the .fmu archive.
 std::string fmu_archive(const FmuSetup& setup);

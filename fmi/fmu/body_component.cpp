@@ -14,7 +14,7 @@ namespace ex = swarmcheck::exploration;
 
 class BodyComponent final : public Component {
  public:
-  BodyComponent() {
+  BodyComponent() : Component("body") {
     table_.bind(params_, Role::parameter);
     table_.bind(in_, Role::input);
     table_.bind(out_, Role::output);

@@ -44,6 +44,12 @@ std::string model_name(Kind k) {
   return "";
 }
 
+const char* to_string(Interface i) { return i == Interface::thesis ? "thesis" : "swarmcheck"; }
+
+std::string model_name(const FmuSetup& s) {
+  return model_name(s.kind) + (s.interface == Interface::thesis ? " (thesis interface)" : "");
+}
+
 void put_state_u64(std::vector<uint8_t>& out, uint64_t v) { put_u64(out, v); }
 uint64_t take_state_u64(std::span<const uint8_t>& in) { return take_u64(in); }
 
@@ -92,6 +98,7 @@ std::string setup_to_json(const FmuSetup& s) {
   json_io::Json j;
   j["format"] = "swarmcheck-fmu-1";
   j["kind"] = to_string(s.kind);
+  if (s.interface != Interface::swarmcheck) j["interface"] = to_string(s.interface);
   j["robots"] = s.robots;
   j["obstacles"] = s.obstacles;
   j["scenario"] = json_io::to_json(s.scenario);
@@ -108,6 +115,11 @@ FmuSetup setup_from_json(const std::string& text) {
   else if (kind == "controller") s.kind = Kind::controller;
   else if (kind == "body") s.kind = Kind::body;
   else throw FmuError("resources/swarmcheck-fmu.json: kind: expected environment, controller or body");
+  const std::string interface = j.value("interface", "swarmcheck");
+  if (interface == "thesis") s.interface = Interface::thesis;
+  else if (interface != "swarmcheck") throw FmuError("resources/swarmcheck-fmu.json: interface: expected swarmcheck or thesis");
+  if (s.interface == Interface::thesis && s.kind != Kind::environment)
+    throw FmuError("resources/swarmcheck-fmu.json: the thesis interface has an Environment only (so far)");
   if (!j.contains("robots") || !j["robots"].is_number_integer() || !j.contains("obstacles") ||
       !j["obstacles"].is_number_integer() || !j.contains("scenario"))
     throw FmuError("resources/swarmcheck-fmu.json: robots, obstacles (integers) and scenario expected");
@@ -118,9 +130,11 @@ FmuSetup setup_from_json(const std::string& text) {
   } catch (const InputError& e) {
     throw FmuError(std::string("resources/swarmcheck-fmu.json: scenario.") + e.what());
   }
+  // The thesis interface may have more obstacle slots than the scenario has obstacles.
   if (s.kind == Kind::environment &&
       (s.robots != static_cast<int32_t>(s.scenario.robots.size()) ||
-       s.obstacles != static_cast<int32_t>(s.scenario.obstacles.size())))
+       (s.interface == Interface::swarmcheck ? s.obstacles != static_cast<int32_t>(s.scenario.obstacles.size())
+                                             : s.obstacles < static_cast<int32_t>(s.scenario.obstacles.size()))))
     throw FmuError("resources/swarmcheck-fmu.json: robots and obstacles must count the scenario's");
   return s;
 }
@@ -128,7 +142,9 @@ FmuSetup setup_from_json(const std::string& text) {
 std::unique_ptr<Component> make_component(const FmuSetup& setup) {
   std::unique_ptr<Component> c;
   switch (setup.kind) {
-    case Kind::environment: c = make_environment_component(setup); break;
+    case Kind::environment:
+      c = setup.interface == Interface::thesis ? make_thesis_environment_component(setup) : make_environment_component(setup);
+      break;
     case Kind::controller: c = make_controller_component(setup); break;
     case Kind::body: c = make_body_component(setup); break;
   }

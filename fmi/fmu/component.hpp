@@ -12,6 +12,7 @@
 #include <span>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "fmi/fmu/variable_table.hpp"
@@ -24,6 +25,11 @@ const char* to_string(Kind k);                 // "environment", ...
 std::string model_identifier(Kind k);          // "swarmcheck_environment", ...
 std::string model_name(Kind k);                // "swarmcheck Environment", ...
 
+// Whose variables an FMU has: swarmcheck's (ports.hpp), or those of thesis A's published FMUs
+// (thesis_ports.hpp), so that they replace the thesis's own in its multi-model.
+enum class Interface { swarmcheck, thesis };
+const char* to_string(Interface i);            // "swarmcheck", "thesis"
+
 class FmuError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
@@ -33,10 +39,15 @@ class FmuError : public std::runtime_error {
 // obstacle counts, and the scenario whose values are the parameters' start values.
 struct FmuSetup {
   Kind kind = Kind::environment;
+  Interface interface = Interface::swarmcheck;
   int32_t robots = 0;      // Environment only
-  int32_t obstacles = 0;   // Environment only
+  int32_t obstacles = 0;   // Environment only: the scenario's, or more slots (thesis interface)
   exploration::Scenario scenario;
 };
+
+// The model name of an FMU of this setup ("swarmcheck Environment", "swarmcheck Environment
+// (thesis interface)", ...).
+std::string model_name(const FmuSetup& s);
 
 // The setup as the resources file's JSON, and back (FmuError on anything unexpected).
 std::string setup_to_json(const FmuSetup& s);
@@ -60,6 +71,8 @@ class Component {
   void restore(std::span<const uint8_t> bytes);   // FmuError if the bytes are not this FMU's
 
  protected:
+  // `kind`: whose variable descriptions its table gives ("environment", "controller", "body").
+  explicit Component(std::string_view kind) : table_(kind) {}
   virtual void save_extra(std::vector<uint8_t>& /*out*/) const {}
   // Reads what save_extra wrote from `in` (advancing it); FmuError if malformed.
   virtual void restore_extra(std::span<const uint8_t>& /*in*/) {}

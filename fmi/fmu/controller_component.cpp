@@ -20,7 +20,7 @@ namespace ex = swarmcheck::exploration;
 
 class ControllerComponent final : public Component {
  public:
-  ControllerComponent() {
+  ControllerComponent() : Component("controller") {
     table_.bind(params_, Role::parameter);
     table_.bind(in_, Role::input);
     table_.bind(out_, Role::output);

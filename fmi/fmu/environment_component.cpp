@@ -7,30 +7,26 @@
 // The robots' poses x_i, y_i are inputs as in the thesis's table; the spec's Environment plans
 // on the cells it moved the robots to, so they are recorded, not used.
 //
-// The saved state: the variables, and one byte per step taken (the input that decided the step:
-// all_arrived, or the epoch verdict). The Environment is a function of its parameters and that
-// sequence, so restoring rebuilds it and replays the steps: exact, and a state costs bytes, not
-// the map.
+// The saved state: the variables, and the run's decisions (environment_run.hpp).
 #include <bit>
 #include <cmath>
 #include <optional>
 
+#include "fmi/fmu/environment_run.hpp"
 #include "fmi/fmu/kinds.hpp"
-#include "impl/exploration/environment.hpp"
 #include "spec/exploration/handshake.hpp"
 #include "spec/exploration/scenario.hpp"
-#include "spec/util/input_error.hpp"
 
 namespace swarmcheck::fmi {
 namespace {
 
 namespace ex = swarmcheck::exploration;
-using ImplEnvironment = swarmcheck::impl::exploration::Environment;
 
 class EnvironmentComponent final : public Component {
  public:
   explicit EnvironmentComponent(const FmuSetup& setup)
-      : base_(setup.scenario),
+      : Component("environment"),
+        base_(setup.scenario),
         robot_params_(static_cast<std::size_t>(setup.robots)),
         robot_in_(static_cast<std::size_t>(setup.robots)),
         robot_out_(static_cast<std::size_t>(setup.robots)),
@@ -63,61 +59,32 @@ class EnvironmentComponent final : public Component {
     for (std::size_t m = 0; m < obstacles_.size(); ++m) obstacles_[m] = {s.obstacles[m][0], s.obstacles[m][1]};
     out_ = {0, 0.0, 0.0, 0, 0};
     local_ = {0, 1};
-    env_.reset();
-    history_.clear();
+    run_.clear();
   }
 
   void initialize() override {
-    env_.reset();
-    history_.clear();
-    env_ = std::make_unique<ImplEnvironment>(scenario(), ExplorationOptions{});
+    run_.start(scenario());
     refresh();
   }
 
   void step(double h_s) override {
-    if (!env_) throw FmuError("doStep before the Environment was initialised");
-    if (h_s != params_.step_size)
-      throw FmuError("doStep: the communication step " + number(h_s) + " s differs from step_size " +
-                     number(params_.step_size) + " s (this FMU steps at step_size only)");
-    if (env_->state().tick >= ex::kStepsMax) throw FmuError("doStep: the Environment has taken its last step (2^31 - 1)");
-    const bool verdict = params_.handshake == 0 ? all_arrived() : epoch_verdict();
-    advance(verdict);
-    history_.push_back(verdict ? 1 : 0);
-    refresh();
+    if (!run_.started()) throw FmuError("doStep before the Environment was initialised");
+    const int64_t steps = environment_steps_in(h_s, params_.step_size);
+    if (run_.state().tick + steps > ex::kStepsMax) throw FmuError("doStep: the Environment has taken its last step (2^31 - 1)");
+    for (int64_t k = 0; k < steps; ++k) {   // the inputs stay as they are over the communication step
+      run_.step(params_.handshake == 0 ? all_arrived() : epoch_verdict(), params_.handshake == 1);
+      refresh();
+    }
   }
 
  protected:
-  void save_extra(std::vector<uint8_t>& out) const override {
-    out.push_back(env_ ? 1 : 0);
-    put_state_u64(out, history_.size());
-    out.insert(out.end(), history_.begin(), history_.end());
-  }
-
+  void save_extra(std::vector<uint8_t>& out) const override { run_.save(out); }
+  // The parameters are restored already: rebuild and replay. Outputs come back as saved.
   void restore_extra(std::span<const uint8_t>& in) override {
-    if (in.empty()) throw FmuError("FMU state: the bytes end early (not a state of this FMU)");
-    const bool initialised = in[0] == 1;
-    in = in.subspan(1);
-    const uint64_t steps = take_state_u64(in);
-    if (steps > in.size()) throw FmuError("FMU state: the bytes end early (not a state of this FMU)");
-    std::vector<uint8_t> history(in.begin(), in.begin() + static_cast<std::ptrdiff_t>(steps));
-    in = in.subspan(static_cast<std::size_t>(steps));
-    if (!initialised && !history.empty()) throw FmuError("FMU state: steps recorded before initialisation");
-    // The parameters are restored already: rebuild and replay. Outputs come back as saved.
-    env_.reset();
-    history_.clear();
-    if (!initialised) return;
-    env_ = std::make_unique<ImplEnvironment>(scenario(), ExplorationOptions{});
-    for (const uint8_t verdict : history) advance(verdict == 1);
-    history_ = std::move(history);
+    run_.restore(in, [&] { return scenario(); }, params_.handshake == 1);
   }
 
  private:
-  static std::string number(double v) {
-    char b[32];
-    std::snprintf(b, sizeof b, "%.17g", v);
-    return b;
-  }
-
   // The parameters as a scenario, checked as a scenario file is (FmuError naming the parameter's
   // scenario key when they do not make one).
   ex::Scenario scenario() const {
@@ -142,12 +109,7 @@ class EnvironmentComponent final : public Component {
     s.mode = ex::Mode::cosim;
     for (std::size_t i = 0; i < robot_params_.size(); ++i) s.robots[i] = {robot_params_[i].lx_, robot_params_[i].ly_};
     for (std::size_t m = 0; m < obstacles_.size(); ++m) s.obstacles[m] = {obstacles_[m].ox_, obstacles_[m].oy_};
-    try {
-      ex::validate(s);
-    } catch (const InputError& e) {
-      throw FmuError(std::string("the parameters do not make a valid scenario: ") + e.what() +
-                     " (mapSize, cellSize, lx_i/ly_i, ox_k/oy_k and the algorithm's parameters are its keys)");
-    }
+    validate_parameters(s, "mapSize, cellSize, lx_i/ly_i, ox_k/oy_k and the algorithm's parameters are its keys");
     return s;
   }
 
@@ -167,14 +129,8 @@ class EnvironmentComponent final : public Component {
     return ex::epoch_environment_rule<num::Concrete>(out_.epoch, acks, std::span<const bool>(done.get(), acks.size())).plan;
   }
 
-  // One step whose decision is `verdict` (what the history records).
-  void advance(bool verdict) {
-    if (params_.handshake == 0) env_->step(verdict);
-    else env_->step_planned(verdict);
-  }
-
   void refresh() {
-    const ex::EnvironmentState& e = env_->state();
+    const ex::EnvironmentState& e = run_.state();
     out_.onDestinationOutput = e.handshake.on_destination_output;
     out_.eP = e.progress.eP;
     out_.sTime = e.progress.sTime;
@@ -194,8 +150,7 @@ class EnvironmentComponent final : public Component {
   std::vector<EnvironmentRobotInputs> robot_in_;
   std::vector<EnvironmentRobotOutputs> robot_out_;
   std::vector<EnvironmentObstacleParameters> obstacles_;
-  std::unique_ptr<ImplEnvironment> env_;
-  std::vector<uint8_t> history_;
+  EnvironmentRun run_;
 };
 
 }  // namespace

@@ -1,5 +1,5 @@
 #pragma once
-// The three kinds of component (component.hpp), one file each.
+// The kinds of component (component.hpp), one file each (the thesis interface's Environment too).
 #include <memory>
 #include <span>
 #include <vector>
@@ -9,6 +9,7 @@
 namespace swarmcheck::fmi {
 
 std::unique_ptr<Component> make_environment_component(const FmuSetup& setup);
+std::unique_ptr<Component> make_thesis_environment_component(const FmuSetup& setup);
 std::unique_ptr<Component> make_controller_component(const FmuSetup& setup);
 std::unique_ptr<Component> make_body_component(const FmuSetup& setup);
 

@@ -34,9 +34,10 @@ std::string model_description_xml(const FmuSetup& setup, const std::string& tool
   std::string x;
   x += "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
   x += fmt::format(
-      "<fmiModelDescription fmiVersion=\"2.0\" modelName=\"{}\" guid=\"{}\" description=\"{}\" "
+      "<fmiModelDescription fmiVersion=\"2.0\" modelName=\"{}\" guid=\"{}\" description=\"{}\" version=\"{}\" "
       "generationTool=\"swarmcheck {}\" variableNamingConvention=\"flat\" numberOfEventIndicators=\"0\">\n",
-      model_name(setup.kind), fmu_guid(setup), xml_escape(description_of(setup.kind)), xml_escape(tool_version));
+      model_name(setup), fmu_guid(setup), xml_escape(description_of(setup.kind)), xml_escape(tool_version),
+      xml_escape(tool_version));
   x += fmt::format(
       "  <CoSimulation modelIdentifier=\"{}\" needsExecutionTool=\"false\" "
       "canHandleVariableCommunicationStepSize=\"{}\" canInterpolateInputs=\"false\" maxOutputDerivativeOrder=\"0\" "
@@ -53,7 +54,7 @@ std::string model_description_xml(const FmuSetup& setup, const std::string& tool
     x += fmt::format("    <ScalarVariable name=\"{}\" valueReference=\"{}\" causality=\"{}\" variability=\"{}\"",
                      xml_escape(v.name), v.value_reference, to_string(v.causality), to_string(v.variability));
     if (v.initial != Initial::none) x += fmt::format(" initial=\"{}\"", to_string(v.initial));
-    const std::string d = c->table().description(v.value_reference);
+    const std::string& d = c->table().description(v.value_reference);
     if (!d.empty()) x += fmt::format(" description=\"{}\"", xml_escape(d));
     x += ">\n      ";
     const bool start = v.initial == Initial::exact || v.causality == Causality::input;

@@ -1,5 +1,6 @@
 #include "fmi/fmu/ports.hpp"
 
+#include <optional>
 #include <string_view>
 #include <utility>
 
@@ -13,72 +14,102 @@ std::string index_name(const std::string& member, int32_t k) {
   return member + std::to_string(k);
 }
 
-const char* describe(const std::string& member) {
-  static constexpr std::pair<std::string_view, const char*> kDescriptions[] = {
-      {"nRobots", "number of robots (fixed at export)"},
-      {"nObstacles", "number of obstacle cells (fixed at export)"},
-      {"mapSize", "map side length, cells"},
-      {"cellSize", "cell side, m"},
-      {"step_size", "co-simulation step, s (doStep accepts this step only)"},
-      {"s_range", "sensing and spraying range, cells (Chebyshev)"},
-      {"a1", "deposit decay length, cells"},
-      {"a2", "divisor of the uniform deposit term"},
-      {"epsilon", "uniform deposit numerator"},
-      {"ertu_perc", "evaporation rate, 1/s"},
-      {"eta", "heuristic factor"},
-      {"max_ph", "peak deposit"},
-      {"phi", "pheromone exponent (Environment); robot heading, rad (Controller input)"},
-      {"lambda", "heuristic exponent"},
-      {"rule", "rule set: 0 thesis, 1 deterministic, 2 stochastic"},
-      {"seed", "the run's seed (stochastic rule)"},
-      {"handshake", "0: the thesis's onDestination flag handshake, 1: the epoch-numbered handshake"},
-      {"onDestinationOutput", "used for synchronization"},
-      {"eP", "map exploration percentage"},
-      {"sTime", "simulated time, s"},
-      {"epoch", "epoch of the last plan (epoch handshake), mod 4"},
-      {"planningSteps", "steps in which new waypoints were issued"},
-      {"stepCount", "co-simulation steps done"},
-      {"flag", "the thesis's handshake flag"},
-      {"lx_", "start x of the robot, m"},
-      {"ly_", "start y of the robot, m"},
-      {"x_", "x of the robot, m (recorded; the Environment plans on its own cells)"},
-      {"y_", "y of the robot, m (recorded)"},
-      {"onDestination__Input", "the robot's controller is idle at its waypoint"},
-      {"epochAck", "the epoch the controller last accepted (epoch handshake)"},
-      {"xDesired", "x of the robot's waypoint, m"},
-      {"yDesired", "y of the robot's waypoint, m"},
-      {"ox_", "obstacle cell, first index"},
-      {"oy_", "obstacle cell, second index"},
-      {"k_beta", "rotation gain"},
-      {"k_v", "linear gain"},
-      {"x", "x robot coordinate, m"},
-      {"y", "y robot coordinate, m"},
-      {"onDestinationInput", "the Environment's onDestinationOutput"},
-      {"epochInput", "the Environment's epoch (epoch handshake)"},
-      {"servoLeft", "left servo command in [-1, 1]"},
-      {"servoRight", "right servo command in [-1, 1]"},
-      {"accepted", "waypoints accepted so far"},
-      {"beta", "error on the robot orientation, rad"},
-      {"rho", "distance to the waypoint, m"},
-      {"v", "linear speed command"},
-      {"w", "angular speed command"},
-      {"maneuver", "1 orient, 2 drive"},
-      {"target", "the heading maneuver 1 turns to, rad (chosen when it began)"},
-      {"x0", "start x, m"},
-      {"y0", "start y, m"},
-      {"theta0", "start heading, rad (forward is (-sin theta, cos theta))"},
-      {"wheel_radius", "wheel radius r, m"},
-      {"motor_gain", "wheel speed per unit servo command K, rad/s"},
-      {"half_axle", "half the distance between the wheels a, m"},
-      {"servo_left_input", "left servo command"},
-      {"servo_right_input", "right servo command"},
-      {"robot_x", "x, m"},
-      {"robot_y", "y, m"},
-      {"robot_theta", "heading theta, rad"},
+std::string describe(std::string_view kind, const std::string& member, std::optional<int32_t> k) {
+  // By kind, then member; in a repeated group's text '#' stands for the robot's or obstacle's
+  // number, so that no two variables of an FMU share a description.
+  struct Text {
+    std::string_view kind, member;
+    const char* text;
   };
-  for (const auto& [name, text] : kDescriptions)
-    if (name == member) return text;
-  return "";
+  static constexpr Text kDescriptions[] = {
+      {"environment", "nRobots", "number of robots (fixed at export)"},
+      {"environment", "nObstacles", "number of obstacle cells (fixed at export)"},
+      {"environment", "mapSize", "map side length, cells"},
+      {"environment", "cellSize", "cell side, m"},
+      {"environment", "step_size",
+       "Environment step, s (doStep takes a step within 1e-9 of a whole multiple of it, as that many steps)"},
+      {"environment", "s_range", "sensing and spraying range, cells (Chebyshev)"},
+      {"environment", "a1", "deposit decay length, cells"},
+      {"environment", "a2", "divisor of the uniform deposit term"},
+      {"environment", "epsilon", "uniform deposit numerator"},
+      {"environment", "ertu_perc", "evaporation rate, 1/s"},
+      {"environment", "eta", "heuristic factor"},
+      {"environment", "max_ph", "peak deposit"},
+      {"environment", "phi", "pheromone exponent"},
+      {"environment", "lambda", "heuristic exponent"},
+      {"environment", "rule", "rule set: 0 thesis, 1 deterministic, 2 stochastic"},
+      {"environment", "seed", "the run's seed (stochastic rule)"},
+      {"environment", "handshake", "the Environment's handshake: 0 the thesis's onDestination flags, 1 epoch-numbered"},
+      {"environment", "onDestinationOutput", "1: new waypoints were issued in this step (the controllers accept them)"},
+      {"environment", "eP", "map exploration percentage"},
+      {"environment", "sTime", "simulated time, s"},
+      {"environment", "epoch", "epoch of the last plan (epoch handshake), mod 4"},
+      {"environment", "planningSteps", "steps in which new waypoints were issued"},
+      {"environment", "stepCount", "Environment steps done"},
+      {"environment", "flag", "the thesis's handshake flag"},
+      {"environment", "port", "the thesis's live-view port (accepted; swarmcheck's Environment opens no socket)"},
+      {"environment", "lx_", "start x of robot #, m"},
+      {"environment", "ly_", "start y of robot #, m"},
+      {"environment", "x_", "x of robot #, m (recorded; the Environment plans on its own cells)"},
+      {"environment", "y_", "y of robot #, m (recorded)"},
+      {"environment", "onDestination__Input", "1: robot #'s controller is idle at its waypoint"},
+      {"environment", "epochAck", "the epoch robot #'s controller last accepted (epoch handshake)"},
+      {"environment", "xDesired", "x of robot #'s waypoint, m"},
+      {"environment", "yDesired", "y of robot #'s waypoint, m"},
+      {"environment", "ox_", "obstacle cell #, first index"},
+      {"environment", "oy_", "obstacle cell #, second index"},
+      {"controller", "k_beta", "rotation gain"},
+      {"controller", "k_v", "linear gain"},
+      {"controller", "handshake", "the controller's handshake: 0 the thesis's onDestination flags, 1 epoch-numbered"},
+      {"controller", "x", "x of the robot, m (the Body's robot_x)"},
+      {"controller", "y", "y of the robot, m (the Body's robot_y)"},
+      {"controller", "phi", "heading of the robot, rad (the Body's robot_theta)"},
+      {"controller", "xDesired", "x of the waypoint, m"},
+      {"controller", "yDesired", "y of the waypoint, m"},
+      {"controller", "onDestinationInput", "the Environment's onDestinationOutput: 1 when it issued new waypoints"},
+      {"controller", "epochInput", "the Environment's epoch (epoch handshake)"},
+      {"controller", "servoLeft", "left servo command in [-1, 1]"},
+      {"controller", "servoRight", "right servo command in [-1, 1]"},
+      {"controller", "onDestinationOutput", "1: the robot is at its waypoint and idle"},
+      {"controller", "epochAck", "the epoch of the waypoint last accepted (epoch handshake)"},
+      {"controller", "accepted", "waypoints accepted so far"},
+      {"controller", "beta", "error on the robot orientation, rad"},
+      {"controller", "rho", "distance to the waypoint, m"},
+      {"controller", "v", "linear speed command"},
+      {"controller", "w", "angular speed command"},
+      {"controller", "maneuver", "1 orient, 2 drive"},
+      {"controller", "target", "the heading maneuver 1 turns to, rad (chosen when it began)"},
+      {"body", "x0", "start x, m"},
+      {"body", "y0", "start y, m"},
+      {"body", "theta0", "start heading, rad (forward is (-sin theta, cos theta))"},
+      {"body", "wheel_radius", "wheel radius r, m"},
+      {"body", "motor_gain", "wheel speed per unit servo command K, rad/s"},
+      {"body", "half_axle", "half the distance between the wheels a, m"},
+      {"body", "servo_left_input", "left servo command"},
+      {"body", "servo_right_input", "right servo command"},
+      {"body", "robot_x", "x, m"},
+      {"body", "robot_y", "y, m"},
+      {"body", "robot_theta", "heading theta, rad"},
+      // The thesis interface's Environment: its own where the meaning differs, else the Environment's.
+      {"thesis environment", "nRobots", "robots taking part: the first nRobots (at most this FMU's robots)"},
+      {"thesis environment", "nObstacles", "obstacle cells taking part: the first nObstacles (at most this FMU's slots)"},
+      {"thesis environment", "flag", "the thesis's handshake flag at start (swarmcheck's Environment: 1)"},
+      {"thesis environment", "stepCount", "the thesis's step counter at start (swarmcheck's Environment: 0)"},
+      {"thesis environment", "onDestinationOutput", "1.0: new waypoints were issued in this step (the controllers accept them)"},
+      {"thesis environment", "onDestination__Input", "1.0: robot #'s controller is idle at its waypoint"},
+  };
+  const auto find = [&](std::string_view in) -> const Text* {
+    for (const Text& d : kDescriptions)
+      if (d.kind == in && d.member == member) return &d;
+    return nullptr;
+  };
+  const Text* d = find(kind);
+  if (!d && kind.rfind("thesis ", 0) == 0) d = find(kind.substr(7));
+  if (!d) return "";
+  std::string text = d->text;
+  const std::size_t at = text.find('#');
+  if (at != std::string::npos) text.replace(at, 1, k ? std::to_string(*k) : std::string("k"));
+  return text;
 }
 
 const char* to_string(BaseType t) { return t == BaseType::real ? "Real" : "Integer"; }

@@ -13,7 +13,9 @@
 // order, numbered from 0. So a variable's reference depends only on these declarations and N, M.
 #include <boost/hana.hpp>
 #include <cstdint>
+#include <optional>
 #include <string>
+#include <string_view>
 
 namespace swarmcheck::fmi {
 
@@ -82,7 +84,9 @@ struct BodyOutputs {
 
 // A group member's name for robot or obstacle number k (1-based); see the header comment.
 std::string index_name(const std::string& member, int32_t k);
-// The description written in the model description for a member name (empty if none).
-const char* describe(const std::string& member);
+// The description written in the model description of an FMU of `kind` ("environment",
+// "controller", "body") for a group member, robot or obstacle k's in a repeated group (empty if
+// none). No two variables of an FMU share one; a name in two FMUs has its meaning in each.
+std::string describe(std::string_view kind, const std::string& member, std::optional<int32_t> k);
 
 }  // namespace swarmcheck::fmi

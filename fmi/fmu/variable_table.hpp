@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <type_traits>
 #include <vector>
 
@@ -44,6 +45,9 @@ enum class Role { parameter, constant, input, output, local };
 
 class VariableTable {
  public:
+  // The FMU kind whose descriptions the variables bound next get ("environment", ...).
+  explicit VariableTable(std::string_view kind = "") : kind_(kind) {}
+
   // Binds every member of `group` (k: robot or obstacle number, 1-based, for repeated groups).
   template <class Group>
   void bind(Group& group, Role role, std::optional<int32_t> k = std::nullopt) {
@@ -63,7 +67,7 @@ class VariableTable {
         v.integer = &value;
       }
       attributes(v, role);
-      description_.push_back(describe(member));
+      description_.push_back(describe(kind_, member, k));
       slots_.push_back(Slot{v.real ? static_cast<void*>(v.real) : static_cast<void*>(v.integer), v.type, v.causality});
       vars_.push_back(std::move(v));
     });
@@ -79,7 +83,7 @@ class VariableTable {
     int32_t& integer() const { return *static_cast<int32_t*>(storage); }
   };
   const std::vector<Slot>& slots() const { return slots_; }   // by value reference
-  const char* description(uint32_t vr) const { return description_[vr]; }
+  const std::string& description(uint32_t vr) const { return description_[vr]; }
   const Variable* find(uint32_t vr) const { return vr < vars_.size() ? &vars_[vr] : nullptr; }
   const Variable* find(const std::string& name) const;
 
@@ -87,7 +91,8 @@ class VariableTable {
   static void attributes(Variable& v, Role role);
   std::vector<Variable> vars_;
   std::vector<Slot> slots_;
-  std::vector<const char*> description_;
+  std::vector<std::string> description_;
+  std::string_view kind_;   // whose descriptions (ports.hpp's describe)
 };
 
 }  // namespace swarmcheck::fmi

@@ -1,12 +1,11 @@
 #include "fmi/master/fmu_library.hpp"
 
 #include <dlfcn.h>
-#include <libxml/parser.h>
-#include <libxml/tree.h>
 #include <zip.h>
 
-#include <cstdlib>
+#include <algorithm>
 #include <cstdint>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <memory>
@@ -16,18 +15,6 @@
 
 namespace swarmcheck::fmi::master {
 namespace {
-
-std::string attribute(xmlNode* node, const char* name) {
-  xmlChar* v = xmlGetProp(node, reinterpret_cast<const xmlChar*>(name));
-  if (!v) return {};
-  std::string out(reinterpret_cast<const char*>(v));
-  xmlFree(v);
-  return out;
-}
-bool has_attribute(xmlNode* node, const char* name) { return xmlHasProp(node, reinterpret_cast<const xmlChar*>(name)) != nullptr; }
-bool named(xmlNode* node, const char* name) {
-  return node->type == XML_ELEMENT_NODE && xmlStrcmp(node->name, reinterpret_cast<const xmlChar*>(name)) == 0;
-}
 
 // Percent-encodes what a file: URI cannot hold literally.
 std::string file_uri(const std::string& path) {
@@ -105,78 +92,54 @@ F* symbol(void* handle, const char* name, const std::string& fmu, bool required)
   return reinterpret_cast<F*>(p);
 }
 
+// The libraries shipped in binaries/linux64 beside the model's (any *.so* file but `model`), by
+// name.
+std::vector<std::string> shipped_libraries(const std::string& folder, const std::string& model) {
+  std::vector<std::string> out;
+  std::error_code ec;
+  for (const auto& e : std::filesystem::directory_iterator(folder, ec)) {
+    const std::string name = e.path().filename().string();
+    if (e.is_regular_file() && name != model && name.find(".so") != std::string::npos) out.push_back(e.path().string());
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
 }  // namespace
 
-const char* to_string(VarType t) {
-  switch (t) {
-    case VarType::real: return "Real";
-    case VarType::integer: return "Integer";
-    case VarType::boolean: return "Boolean";
-    case VarType::string: return "String";
+FmuLibrary::Copy FmuLibrary::load(const std::string& so) const {
+  Copy c;
+  c.handle = dlopen(so.c_str(), RTLD_NOW | RTLD_LOCAL);
+  if (!c.handle) throw InputError(path_, std::string("cannot load its library: ") + dlerror());
+  try {
+    const std::string& f = path_;
+    c.api.instantiate = symbol<fmi2InstantiateTYPE>(c.handle, "fmi2Instantiate", f, true);
+    c.api.free_instance = symbol<fmi2FreeInstanceTYPE>(c.handle, "fmi2FreeInstance", f, true);
+    c.api.setup_experiment = symbol<fmi2SetupExperimentTYPE>(c.handle, "fmi2SetupExperiment", f, true);
+    c.api.enter_initialization_mode = symbol<fmi2EnterInitializationModeTYPE>(c.handle, "fmi2EnterInitializationMode", f, true);
+    c.api.exit_initialization_mode = symbol<fmi2ExitInitializationModeTYPE>(c.handle, "fmi2ExitInitializationMode", f, true);
+    c.api.terminate = symbol<fmi2TerminateTYPE>(c.handle, "fmi2Terminate", f, true);
+    c.api.get_real = symbol<fmi2GetRealTYPE>(c.handle, "fmi2GetReal", f, true);
+    c.api.get_integer = symbol<fmi2GetIntegerTYPE>(c.handle, "fmi2GetInteger", f, true);
+    c.api.get_boolean = symbol<fmi2GetBooleanTYPE>(c.handle, "fmi2GetBoolean", f, true);
+    c.api.get_string = symbol<fmi2GetStringTYPE>(c.handle, "fmi2GetString", f, true);
+    c.api.set_real = symbol<fmi2SetRealTYPE>(c.handle, "fmi2SetReal", f, true);
+    c.api.set_integer = symbol<fmi2SetIntegerTYPE>(c.handle, "fmi2SetInteger", f, true);
+    c.api.set_boolean = symbol<fmi2SetBooleanTYPE>(c.handle, "fmi2SetBoolean", f, true);
+    c.api.set_string = symbol<fmi2SetStringTYPE>(c.handle, "fmi2SetString", f, true);
+    c.api.do_step = symbol<fmi2DoStepTYPE>(c.handle, "fmi2DoStep", f, true);
+    c.api.get_state = symbol<fmi2GetFMUstateTYPE>(c.handle, "fmi2GetFMUstate", f, false);
+    c.api.set_state = symbol<fmi2SetFMUstateTYPE>(c.handle, "fmi2SetFMUstate", f, false);
+    c.api.free_state = symbol<fmi2FreeFMUstateTYPE>(c.handle, "fmi2FreeFMUstate", f, false);
+    c.api.serialized_state_size = symbol<fmi2SerializedFMUstateSizeTYPE>(c.handle, "fmi2SerializedFMUstateSize", f, false);
+    c.api.serialize_state = symbol<fmi2SerializeFMUstateTYPE>(c.handle, "fmi2SerializeFMUstate", f, false);
+    c.api.deserialize_state = symbol<fmi2DeSerializeFMUstateTYPE>(c.handle, "fmi2DeSerializeFMUstate", f, false);
+    c.api.reset = symbol<fmi2ResetTYPE>(c.handle, "fmi2Reset", f, true);
+  } catch (...) {
+    dlclose(c.handle);
+    throw;
   }
-  return "?";
-}
-
-const ModelVariable* ModelDescription::find(const std::string& name) const {
-  const auto it = by_name.find(name);
-  return it == by_name.end() ? nullptr : &variables[it->second];
-}
-
-ModelDescription read_model_description(const std::string& xml, const std::string& file) {
-  const auto doc = std::unique_ptr<xmlDoc, void (*)(xmlDoc*)>(
-      xmlReadMemory(xml.data(), static_cast<int>(xml.size()), "modelDescription.xml", nullptr,
-                    XML_PARSE_NONET | XML_PARSE_NOERROR | XML_PARSE_NOWARNING),
-      xmlFreeDoc);
-  if (!doc) {
-    const xmlError* e = xmlGetLastError();
-    std::string why = e && e->message ? e->message : "";
-    while (!why.empty() && (why.back() == '\n' || why.back() == ' ')) why.pop_back();   // libxml2 ends it with a newline
-    throw InputError(file + (e ? ":" + std::to_string(e->line) : ""),
-                     "modelDescription.xml is not well-formed XML" + (why.empty() ? "" : ": " + why));
-  }
-  xmlNode* root = xmlDocGetRootElement(doc.get());
-  if (!root || !named(root, "fmiModelDescription")) throw InputError(file, "expected a root element fmiModelDescription");
-  ModelDescription md;
-  md.fmi_version = attribute(root, "fmiVersion");
-  md.model_name = attribute(root, "modelName");
-  md.guid = attribute(root, "guid");
-  if (md.fmi_version.rfind("2.", 0) != 0)
-    throw InputError(file, "expected fmiVersion 2.0 (FMI 2), got '" + md.fmi_version + "'");
-  for (xmlNode* n = root->children; n; n = n->next) {
-    if (named(n, "CoSimulation")) {
-      md.model_identifier = attribute(n, "modelIdentifier");
-      md.can_get_and_set_state = attribute(n, "canGetAndSetFMUstate") == "true";
-    }
-    if (!named(n, "ModelVariables")) continue;
-    for (xmlNode* v = n->children; v; v = v->next) {
-      if (!named(v, "ScalarVariable")) continue;
-      ModelVariable mv;
-      mv.name = attribute(v, "name");
-      const std::string vr = attribute(v, "valueReference");
-      char* end = nullptr;
-      const unsigned long parsed = std::strtoul(vr.c_str(), &end, 10);
-      if (mv.name.empty() || vr.empty() || *end != '\0' || parsed > 0xffffffffUL)
-        throw InputError(file + ":" + std::to_string(v->line), "a ScalarVariable needs a name and a valueReference");
-      mv.value_reference = static_cast<uint32_t>(parsed);
-      mv.causality = has_attribute(v, "causality") ? attribute(v, "causality") : "local";
-      mv.variability = has_attribute(v, "variability") ? attribute(v, "variability") : "continuous";
-      bool typed = false;
-      for (xmlNode* t = v->children; t; t = t->next) {
-        if (t->type != XML_ELEMENT_NODE) continue;
-        if (named(t, "Real")) mv.type = VarType::real, typed = true;
-        else if (named(t, "Integer") || named(t, "Enumeration")) mv.type = VarType::integer, typed = true;
-        else if (named(t, "Boolean")) mv.type = VarType::boolean, typed = true;
-        else if (named(t, "String")) mv.type = VarType::string, typed = true;
-      }
-      if (!typed) throw InputError(file + ":" + std::to_string(v->line), "ScalarVariable " + mv.name + " has no type element");
-      if (!md.by_name.emplace(mv.name, md.variables.size()).second)
-        throw InputError(file + ":" + std::to_string(v->line), "two ScalarVariables are named " + mv.name);
-      md.variables.push_back(mv);
-    }
-  }
-  if (md.model_identifier.empty())
-    throw InputError(file, "expected a CoSimulation element with a modelIdentifier (a co-simulation FMU)");
-  return md;
+  return c;
 }
 
 FmuLibrary::FmuLibrary(const std::string& fmu_path, std::uint64_t max_unpacked_bytes) : path_(fmu_path) {
@@ -194,44 +157,66 @@ FmuLibrary::FmuLibrary(const std::string& fmu_path, std::uint64_t max_unpacked_b
     if (!in) throw InputError(fmu_path, "cannot read its modelDescription.xml");
     const std::string xml((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     description_ = read_model_description(xml, fmu_path + "!modelDescription.xml");
-    const std::string so = dir_ + "/binaries/linux64/" + description_.model_identifier + ".so";
-    if (!std::filesystem::is_regular_file(so))
-      throw InputError(fmu_path, "no binaries/linux64/" + description_.model_identifier + ".so (this master runs linux64 FMUs)");
-    handle_ = dlopen(so.c_str(), RTLD_NOW | RTLD_LOCAL);
-    if (!handle_) throw InputError(fmu_path, std::string("cannot load its library: ") + dlerror());
-    api_.instantiate = symbol<fmi2InstantiateTYPE>(handle_, "fmi2Instantiate", fmu_path, true);
-    api_.free_instance = symbol<fmi2FreeInstanceTYPE>(handle_, "fmi2FreeInstance", fmu_path, true);
-    api_.setup_experiment = symbol<fmi2SetupExperimentTYPE>(handle_, "fmi2SetupExperiment", fmu_path, true);
-    api_.enter_initialization_mode = symbol<fmi2EnterInitializationModeTYPE>(handle_, "fmi2EnterInitializationMode", fmu_path, true);
-    api_.exit_initialization_mode = symbol<fmi2ExitInitializationModeTYPE>(handle_, "fmi2ExitInitializationMode", fmu_path, true);
-    api_.terminate = symbol<fmi2TerminateTYPE>(handle_, "fmi2Terminate", fmu_path, true);
-    api_.get_real = symbol<fmi2GetRealTYPE>(handle_, "fmi2GetReal", fmu_path, true);
-    api_.get_integer = symbol<fmi2GetIntegerTYPE>(handle_, "fmi2GetInteger", fmu_path, true);
-    api_.get_boolean = symbol<fmi2GetBooleanTYPE>(handle_, "fmi2GetBoolean", fmu_path, true);
-    api_.get_string = symbol<fmi2GetStringTYPE>(handle_, "fmi2GetString", fmu_path, true);
-    api_.set_real = symbol<fmi2SetRealTYPE>(handle_, "fmi2SetReal", fmu_path, true);
-    api_.set_integer = symbol<fmi2SetIntegerTYPE>(handle_, "fmi2SetInteger", fmu_path, true);
-    api_.set_boolean = symbol<fmi2SetBooleanTYPE>(handle_, "fmi2SetBoolean", fmu_path, true);
-    api_.set_string = symbol<fmi2SetStringTYPE>(handle_, "fmi2SetString", fmu_path, true);
-    api_.do_step = symbol<fmi2DoStepTYPE>(handle_, "fmi2DoStep", fmu_path, true);
-    api_.get_state = symbol<fmi2GetFMUstateTYPE>(handle_, "fmi2GetFMUstate", fmu_path, false);
-    api_.set_state = symbol<fmi2SetFMUstateTYPE>(handle_, "fmi2SetFMUstate", fmu_path, false);
-    api_.free_state = symbol<fmi2FreeFMUstateTYPE>(handle_, "fmi2FreeFMUstate", fmu_path, false);
-    api_.serialized_state_size = symbol<fmi2SerializedFMUstateSizeTYPE>(handle_, "fmi2SerializedFMUstateSize", fmu_path, false);
-    api_.serialize_state = symbol<fmi2SerializeFMUstateTYPE>(handle_, "fmi2SerializeFMUstate", fmu_path, false);
-    api_.deserialize_state = symbol<fmi2DeSerializeFMUstateTYPE>(handle_, "fmi2DeSerializeFMUstate", fmu_path, false);
-    api_.reset = symbol<fmi2ResetTYPE>(handle_, "fmi2Reset", fmu_path, true);
+    const std::string binaries = dir_ + "/binaries/linux64";
+    const std::string model = description_.model_identifier + ".so";
+    so_ = binaries + "/" + model;
+    if (!std::filesystem::is_regular_file(so_))
+      throw InputError(fmu_path, "no binaries/linux64/" + model + " (this master runs linux64 FMUs)");
+    // The shipped libraries may need each other: loaded in rounds until none more loads (an FMU
+    // may also ship files the model does not need and that do not load here; they only matter
+    // if the model's library then fails to load, and are named in its message).
+    std::vector<std::string> pending = shipped_libraries(binaries, model);
+    std::vector<std::string> refused;
+    for (bool progress = true; progress && !pending.empty();) {
+      progress = false;
+      refused.clear();
+      std::vector<std::string> still;
+      for (const std::string& lib : pending) {
+        if (void* h = dlopen(lib.c_str(), RTLD_LAZY | RTLD_LOCAL)) {
+          shipped_.push_back(h);
+          progress = true;
+        } else {
+          still.push_back(lib);
+          refused.push_back(dlerror());
+        }
+      }
+      pending = std::move(still);
+    }
+    try {
+      copies_.push_back(std::make_unique<Copy>(load(so_)));
+    } catch (const InputError& e) {
+      std::string also;
+      for (const std::string& r : refused) also += "; a library it ships did not load either: " + r;
+      throw InputError("", e.what() + also);
+    }
     resource_uri_ = file_uri(dir_ + "/resources");
   } catch (...) {
-    if (handle_) dlclose(handle_);
+    unload();
     std::error_code ec;
     std::filesystem::remove_all(dir_, ec);
     throw;
   }
 }
 
+std::size_t FmuLibrary::load_copy() {
+  const std::string copy = so_.substr(0, so_.size() - 3) + ".copy" + std::to_string(copies_.size()) + ".so";
+  std::error_code ec;
+  std::filesystem::copy_file(so_, copy, std::filesystem::copy_options::overwrite_existing, ec);
+  if (ec) throw InputError(path_, "cannot copy its library for one more instance: " + ec.message());
+  copies_.push_back(std::make_unique<Copy>(load(copy)));
+  return copies_.size() - 1;
+}
+
+void FmuLibrary::unload() {
+  if (keep_loaded_) return;
+  for (auto c = copies_.rbegin(); c != copies_.rend(); ++c) dlclose((*c)->handle);
+  for (auto h = shipped_.rbegin(); h != shipped_.rend(); ++h) dlclose(*h);
+  copies_.clear();
+  shipped_.clear();
+}
+
 FmuLibrary::~FmuLibrary() {
-  if (handle_) dlclose(handle_);
+  unload();
   std::error_code ec;
   std::filesystem::remove_all(dir_, ec);
 }

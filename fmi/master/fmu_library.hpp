@@ -1,38 +1,23 @@
 #pragma once
 // One FMU as the master loads it: the archive unpacked into a private temporary folder (removed
-// when this object goes), its modelDescription.xml read (libxml2), and its shared library opened
-// (dlopen, RTLD_LOCAL) with every fmi2 function the master calls resolved. Any problem is an
-// InputError naming the FMU file and what was expected.
+// when this object goes), its modelDescription.xml read (model_description.hpp), and its shared
+// library opened (dlopen, RTLD_LOCAL) with every fmi2 function the master calls resolved.
+//   - Libraries the FMU ships beside its binary (binaries/linux64/*.so*, e.g. a libwebsockets the
+//     model needs) are loaded first, so the model's library finds them by their soname.
+//   - A model whose state is global (canBeInstantiatedOnlyOncePerProcess) gets one copy of its
+//     library per instance: load_copy() copies the .so under a new name and dlopens it, and the
+//     dynamic loader, which shares a library by file identity, gives the copy its own globals.
+//     (The shipped libraries above are loaded once and shared by the copies.)
+// Any problem is an InputError naming the FMU file and what was expected.
 #include <cstdint>
-#include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "fmi/fmi2/fmi2_api.h"
+#include "fmi/master/model_description.hpp"
 
 namespace swarmcheck::fmi::master {
-
-enum class VarType { real, integer, boolean, string };
-const char* to_string(VarType t);
-
-struct ModelVariable {
-  std::string name;
-  uint32_t value_reference = 0;
-  VarType type = VarType::real;
-  std::string causality;     // parameter, calculatedParameter, input, output, local, independent
-  std::string variability;   // constant, fixed, tunable, discrete, continuous
-};
-
-struct ModelDescription {
-  std::string fmi_version, model_name, guid, model_identifier;
-  bool can_get_and_set_state = false;
-  std::vector<ModelVariable> variables;
-  std::map<std::string, std::size_t> by_name;   // name -> index in variables
-  const ModelVariable* find(const std::string& name) const;
-};
-
-// Reads a modelDescription.xml's text (`file` names it in messages).
-ModelDescription read_model_description(const std::string& xml, const std::string& file);
 
 struct Fmi2Functions {
   fmi2InstantiateTYPE* instantiate = nullptr;
@@ -70,18 +55,36 @@ class FmuLibrary {
   FmuLibrary& operator=(const FmuLibrary&) = delete;
 
   const std::string& path() const { return path_; }
+  const std::string& folder() const { return dir_; }   // the temporary folder it is unpacked in
   const ModelDescription& description() const { return description_; }
-  const Fmi2Functions& api() const { return api_; }
+  // The functions of a loaded copy of the library (0: the one loaded by the constructor).
+  // (The reference stays valid while this object lives: copies loaded later do not move it.)
+  const Fmi2Functions& api(std::size_t copy = 0) const { return copies_[copy]->api; }
+  std::size_t copies() const { return copies_.size(); }
+  // Loads one more copy of the model's library (see the header comment); returns its number.
+  std::size_t load_copy();
+  // The library is not unloaded when this object goes (its folder is still removed): for an FMU
+  // a call of which never returned, whose code may still run (a thread it started).
+  void keep_loaded() { keep_loaded_ = true; }
   // file:// URI of the unpacked resources/ folder.
   const std::string& resource_uri() const { return resource_uri_; }
 
  private:
+  struct Copy {
+    void* handle = nullptr;
+    Fmi2Functions api;
+  };
+  Copy load(const std::string& so) const;
+  void unload();
+
   std::string path_;
   std::string dir_;   // the temporary folder
+  std::string so_;    // the model's library in it
   std::string resource_uri_;
   ModelDescription description_;
-  void* handle_ = nullptr;
-  Fmi2Functions api_;
+  std::vector<void*> shipped_;   // the libraries shipped beside the model's, in load order
+  std::vector<std::unique_ptr<Copy>> copies_;
+  bool keep_loaded_ = false;
 };
 
 }  // namespace swarmcheck::fmi::master

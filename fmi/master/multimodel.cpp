@@ -62,6 +62,38 @@ void refuse_misspellings(const Json& object, std::initializer_list<const char*> 
         throw InputError(where + key, std::string("unknown key: did you mean \"") + k + "\"?");
 }
 
+// A configuration's keys are all known (what the INTO-CPS engine writes): anything else is
+// refused, a misspelling with the key it resembles.
+void refuse_unknown(const Json& object, std::initializer_list<const char*> known, const std::string& where) {
+  refuse_misspellings(object, known, where);
+  for (const auto& [key, value] : object.items()) {
+    bool found = false;
+    for (const char* k : known) found = found || key == k;
+    if (found) continue;
+    std::string list;
+    for (const char* k : known) list += std::string(list.empty() ? "" : ", ") + k;
+    throw InputError(where + key, "unknown key: expected one of the INTO-CPS engine's (" + list + ")");
+  }
+}
+
+// Where an FMU file named in a multi-model is: next to the multi-model, else in the INTO-CPS
+// project's FMUs/ folder (the parent of the nearest enclosing Multi-models/ folder), else (for
+// the message) next to the multi-model.
+std::filesystem::path fmu_file(const std::filesystem::path& folder, const std::filesystem::path& file) {
+  if (file.is_absolute()) return file;
+  const std::filesystem::path beside = folder / file;
+  std::error_code ec;
+  if (std::filesystem::exists(beside, ec)) return beside;
+  const std::filesystem::path absolute = std::filesystem::absolute(folder, ec);
+  for (std::filesystem::path p = absolute; !ec && p.has_relative_path(); p = p.parent_path())
+    if (p.filename() == "Multi-models") {
+      const std::filesystem::path in_project = p.parent_path() / "FMUs" / file;
+      if (std::filesystem::exists(in_project, ec)) return in_project;
+      break;
+    }
+  return beside;
+}
+
 }  // namespace
 
 MultiModel read_multimodel(const std::string& path) {
@@ -79,8 +111,7 @@ MultiModel read_multimodel(const std::string& path) {
     if (!value.is_string()) throw InputError(path + ": fmus." + key, "expected the FMU's file name (a string)");
     std::string file = value.get<std::string>();
     if (file.rfind("file://", 0) == 0) file = file.substr(7);
-    const std::filesystem::path p(file);
-    mm.fmus.emplace_back(key, (p.is_absolute() ? p : folder / p).string());
+    mm.fmus.emplace_back(key, fmu_file(folder, file).string());
   }
   const auto known_fmu = [&](const PortName& p, const std::string& where) {
     for (const auto& [key, file] : mm.fmus)
@@ -120,11 +151,14 @@ MultiModel read_multimodel(const std::string& path) {
       const PortName p = port_name(name, path, where);
       known_fmu(p, where);
       note_instance(p);
-      Parameter par{p, 0, false, where};
+      Parameter par;
+      par.port = p;
+      par.where = where;
       if (value.is_boolean()) par.value = value.get<bool>() ? 1 : 0, par.integral = true;
       else if (value.is_number_integer()) par.value = value.get<double>(), par.integral = true;
       else if (value.is_number()) par.value = value.get<double>();
-      else throw InputError(path + ": " + where, "expected a number or a boolean");
+      else if (value.is_string()) par.text = value.get<std::string>(), par.is_text = true;
+      else throw InputError(path + ": " + where, "expected a number, a boolean or a string");
       mm.parameters.push_back(par);
     }
   }
@@ -140,11 +174,35 @@ CoSimConfig read_config(const std::string& path) {
   if (path.empty()) return c;
   const Json j = parse_file(path, "co-simulation configuration");
   if (!j.is_object()) throw InputError(path, "expected a JSON object (an INTO-CPS co-simulation configuration)");
-  if (j.contains("fmus") && !j.contains("algorithm"))
+  if (j.contains("fmus"))
     throw InputError(path, "is a multi-model (it has \"fmus\"), not a co-simulation configuration (startTime, endTime, "
-                           "algorithm): give the multi-model first and this with --config only if it is one");
-  refuse_misspellings(j, {"startTime", "endTime", "algorithm"}, path + ": ");
-  if (j.contains("algorithm") && j["algorithm"].is_object()) refuse_misspellings(j["algorithm"], {"type", "size"}, path + ": algorithm.");
+                           "algorithm): give the multi-model first and this with --config only if it is one (a run "
+                           "folder's config.json holds both: give it as the multi-model, its coe.json with --config)");
+  refuse_unknown(j, {"startTime", "endTime", "algorithm", "logVariables", "multimodel_path", "multimodel_crc",
+                     "liveGraphColumns", "liveGraphVisibleRowCount", "graphs", "livestreamInterval", "livestream",
+                     "visible", "loggingOn", "overrideLogLevel", "enableAllLogCategoriesPerInstance",
+                     "postProcessingScript", "parallelSimulation", "stabalizationEnabled", "global_absolute_tolerance",
+                     "global_relative_tolerance", "simulationProgramDelay", "reportProgress", "liveLogInterval",
+                     "logLevels"},
+                 path + ": ");
+  if (j.contains("algorithm") && j["algorithm"].is_object()) refuse_unknown(j["algorithm"], {"type", "size"}, path + ": algorithm.");
+  if (j.contains("stabalizationEnabled") && j["stabalizationEnabled"] != false)
+    throw InputError(path + ": stabalizationEnabled", "expected false: this master takes each step once (no iterated, "
+                                                      "stabilised steps)");
+  if (j.contains("logVariables")) {
+    const Json& log = j["logVariables"];
+    if (!log.is_object())
+      throw InputError(path + ": logVariables", "expected an object of \"{FMU}.instance\": [\"variable\", ...]");
+    for (const auto& [instance, names] : log.items()) {
+      const std::string where = "logVariables." + instance;
+      if (!names.is_array()) throw InputError(path + ": " + where, "expected a list of variable names");
+      for (std::size_t k = 0; k < names.size(); ++k) {
+        const std::string w = where + "[" + std::to_string(k) + "]";
+        if (!names[k].is_string()) throw InputError(path + ": " + w, "expected a variable name");
+        c.log_variables.push_back(LogVariable{port_name(instance + "." + names[k].get<std::string>(), path, w), path + ": " + w});
+      }
+    }
+  }
   const auto number = [&](const Json& v, const std::string& where) {
     if (!v.is_number() || !std::isfinite(v.get<double>())) throw InputError(path + ": " + where, "expected a finite number");
     return v.get<double>();

@@ -3,8 +3,11 @@
 //   multimodel.json: {"fmus": {"{FMU}": "path.fmu", ...},
 //                     "connections": {"{FMU}.instance.output": ["{FMU}.instance.input", ...], ...},
 //                     "parameters": {"{FMU}.instance.variable": number, ...}}
-//   coe.json:        {"startTime": 0, "endTime": 30, "algorithm": {"type": "fixed-step", "size": 0.1}}
-// FMU paths are relative to the multi-model's folder. Every instance named in a connection or a
+//   coe.json:        {"startTime": 0, "endTime": 30, "algorithm": {"type": "fixed-step", "size": 0.1},
+//                     "logVariables": {"{FMU}.instance": ["variable", ...]}, ...}
+// An FMU path is relative to the multi-model's folder; a file not there is looked for where the
+// INTO-CPS application keeps it, in the project's FMUs/ folder (PROJECT/Multi-models/.../mm.json
+// -> PROJECT/FMUs/X.fmu), so a published project runs as it is on disk. Every instance named in a connection or a
 // parameter is one instance of its FMU; instances are stepped (Gauss-Seidel) in the order of their
 // FMUs in "fmus", then in the order they first appear in the file. Every problem is an InputError
 // naming the file and the JSON path.
@@ -29,6 +32,8 @@ struct Parameter {
   PortName port;
   double value = 0;
   bool integral = false;   // written as an integer (or a boolean: 1 / 0)
+  bool is_text = false;    // a string (for a String variable)
+  std::string text;
   std::string where;
 };
 
@@ -42,13 +47,23 @@ struct MultiModel {
 
 MultiModel read_multimodel(const std::string& path);
 
+// A variable the configuration asks to log ("logVariables": {"{FMU}.instance": ["var", ...]}).
+struct LogVariable {
+  PortName port;
+  std::string where;   // "file: logVariables.{FMU}.instance[k]", for messages
+};
+
 struct CoSimConfig {
   double start_s = 0;
   double end_s = 10;
   double step_s = 0.1;
+  std::vector<LogVariable> log_variables;
 };
 
-// Reads coe.json; `path` empty gives the defaults above.
+// Reads coe.json; `path` empty gives the defaults above. Every key the INTO-CPS engine writes in a
+// configuration (coe.json, and a run folder's config-simulation.json) is accepted; those that
+// change nothing the master computes (live graphs, logging, real-time pacing, ...) are ignored;
+// stabalizationEnabled true (iterated steps) is refused, as is any other key.
 CoSimConfig read_config(const std::string& path);
 
 }  // namespace swarmcheck::fmi::master

@@ -6,6 +6,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <thread>
 
@@ -64,11 +65,19 @@ TEST(FmiCli, ExportWritesTheThreeFmusAndCosimRunsTheThesisMultiModelToCompletion
   EXPECT_EQ(summary["eP"], 100.0);
   EXPECT_EQ(summary["completion_step"], 10237);
   EXPECT_EQ(summary["handshake"], "held");
+  // The engine's outputs.csv: time, step-size, the connected outputs sorted by name (4 robots:
+  // 3 per Body, 4 per Controller, 2 per robot and 2 more of the Environment), a row at 0.
   std::ifstream in(csv);
-  std::string header;
+  std::string header, first, second;
   std::getline(in, header);
-  EXPECT_EQ(header.rfind("time,{Controller}.controller1.servoLeft,", 0), 0u) << header.substr(0, 80);
-  EXPECT_NE(header.find(",{Environment}.environment.eP,"), std::string::npos);
+  std::getline(in, first);
+  std::getline(in, second);
+  EXPECT_EQ(header.rfind("time,step-size,{Body}.body1.robot_theta,{Body}.body1.robot_x,{Body}.body1.robot_y,{Body}.body2.", 0),
+            0u) << header.substr(0, 120);
+  EXPECT_EQ(std::count(header.begin(), header.end(), ','), 2 + 4 * (3 + 4 + 2) + 2 - 1) << header;
+  EXPECT_EQ(header.find(",{Environment}.environment.eP"), std::string::npos);   // not connected, not logged
+  EXPECT_EQ(first.rfind("0.0,0.0,0.0,0.5,0.5,", 0), 0u) << first.substr(0, 80);   // robot 1 at (0.5, 0.5)
+  EXPECT_EQ(second.rfind("0.1,0.1,", 0), 0u) << second.substr(0, 80);
   EXPECT_TRUE(f.tmp_empty());
 }
 
