@@ -17,6 +17,7 @@ std::string_view family_name(Family f) {
     case Family::long_horizon: return "long_horizon";
     case Family::edge_poses: return "edge_poses";
     case Family::crowds: return "crowds";
+    case Family::real_body: return "real_body";
   }
   return "?";
 }
@@ -192,6 +193,41 @@ ExplorationCase gen_crowds(int64_t max_steps) {
   return c;
 }
 
+// The thesis's own robot: the 20-sim body (spec/exploration/body_intocps.hpp) under either
+// controller, a handful of robots (so the library's four-robot blocks end part-full), the body's
+// parameters that change its paths (the reported point's offset, the ground friction, the
+// start heading) and a battery that runs out mid-run (the servos' supply drops to zero).
+ExplorationCase gen_real_body(int64_t max_steps) {
+  ExplorationCase c = gen_standard(max_steps);
+  c.family = Family::real_body;
+  Scenario& s = c.scenario;
+  s.mode = Mode::cosim;
+  s.map_size = std::clamp(s.map_size, 2, 12);
+  const int32_t cells = s.map_size * s.map_size;
+  const int32_t placed_max = std::min(cells, 14);
+  const std::vector<int32_t> order = gen_cell_order(cells, placed_max);
+  const int32_t robots = *rc::gen::inRange<int32_t>(1, std::min(9, std::max(1, placed_max * 2 / 3)) + 1);
+  const int32_t obstacles = *rc::gen::inRange<int32_t>(0, std::max(1, std::min(placed_max - robots, cells / 3) + 1));
+  s.robots.clear();
+  s.obstacles.clear();
+  for (int32_t k = 0; k < robots; ++k) s.robots.push_back(centre_point(order[static_cast<std::size_t>(k)], s));
+  for (int32_t k = robots; k < robots + obstacles; ++k) {
+    const int32_t cell = order[static_cast<std::size_t>(k)];
+    s.obstacles.push_back({cell / s.map_size, cell % s.map_size});
+  }
+  s.controller = *rc::gen::element(ControllerKind::swarmcheck, ControllerKind::thesis);
+  s.body.kind = BodyKind::intocps;
+  IntocpsBodyParams& b = s.body.intocps;
+  b = scenario_intocps_params();
+  b.axle_offset = *rc::gen::element(b.axle_offset, 0.0, 0.05);
+  b.mu = *rc::gen::element(b.mu, 0.0, 0.4);
+  b.initial_position[2] = *rc::gen::element(b.initial_position[2], 0.0, 2.5, -3.14159265358979);
+  b.battery_initial_energy = *rc::gen::element(b.battery_initial_energy, 3.0);
+  s.params.step_size = *rc::gen::element(0.1, 0.05, 0.2, kCosimStepMax_s);
+  s.max_steps = std::min<int64_t>(3 * max_steps, 600);   // each step is a hundred RK4 steps per robot
+  return c;
+}
+
 }  // namespace
 
 rc::Gen<ExplorationCase> gen_exploration_case(int64_t max_steps) {
@@ -199,10 +235,12 @@ rc::Gen<ExplorationCase> gen_exploration_case(int64_t max_steps) {
     const auto family = *rc::gen::weightedOneOf<Family>({{16, rc::gen::just(Family::standard)},
                                                          {2, rc::gen::just(Family::long_horizon)},
                                                          {3, rc::gen::just(Family::edge_poses)},
-                                                         {3, rc::gen::just(Family::crowds)}});
+                                                         {3, rc::gen::just(Family::crowds)},
+                                                         {3, rc::gen::just(Family::real_body)}});
     ExplorationCase c = family == Family::standard       ? gen_standard(max_steps)
                         : family == Family::long_horizon ? gen_long_horizon()
                         : family == Family::crowds       ? gen_crowds(max_steps)
+                        : family == Family::real_body    ? gen_real_body(max_steps)
                                                          : gen_edge_poses(max_steps);
     // Crowds are there for the parallel path.
     c.grouped = family == Family::crowds || *rc::gen::arbitrary<bool>();

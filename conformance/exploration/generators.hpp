@@ -25,7 +25,7 @@
 
 namespace swarmcheck::conformance::exploration {
 
-enum class Family { standard, long_horizon, edge_poses, crowds };
+enum class Family { standard, long_horizon, edge_poses, crowds, real_body };
 std::string_view family_name(Family f);
 
 struct ExplorationCase {
