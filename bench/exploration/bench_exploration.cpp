@@ -57,6 +57,31 @@ Scenario bench_scenario(Mode mode, int32_t robots, int32_t map_size) {
   return s;
 }
 
+// The published robot: cosim with the 20-sim body (100 RK4 steps a robot a master step) and
+// the swarmcheck controller.
+Scenario intocps_scenario(int32_t robots, int32_t map_size) {
+  Scenario s = bench_scenario(Mode::cosim, robots, map_size);
+  s.body.kind = BodyKind::intocps;
+  validate(s);
+  return s;
+}
+
+void bench_intocps(benchmark::State& state, int32_t robots, int32_t map, bool one) {
+  const Scenario s = intocps_scenario(robots, map);
+  ExplorationOptions o;
+  if (one) o.threads = 1;
+  Exploration x(s, o);
+  run_steps(state, x, s);
+  state.counters["robot_substeps_per_s"] =
+      benchmark::Counter(static_cast<double>(state.iterations()) * robots * 100.0, benchmark::Counter::kIsRate);
+}
+
+void bench_intocps_model(benchmark::State& state, int32_t robots, int32_t map) {
+  const Scenario s = intocps_scenario(robots, map);
+  auto m = std::make_unique<swarmcheck::model::exploration::ExplorationModel>(s);
+  run_steps(state, *m, s);
+}
+
 ExplorationOptions one_thread() {
   ExplorationOptions o;
   o.threads = 1;
@@ -175,6 +200,17 @@ void register_all() {
           benchmark::RegisterBenchmark(("model/" + size).c_str(), bench_model, mode, robots, map)
               ->Unit(benchmark::kMicrosecond)->MinTime(0.2);
       }
+  // The 20-sim body (cosim, body intocps): the four-robot lanes against the model's scalar step.
+  for (const auto& [robots, map] : {std::pair{10, 64}, std::pair{100, 64}, std::pair{1000, 256}, std::pair{10000, 256}}) {
+    const std::string size = "intocps/r" + std::to_string(robots) + "/n" + std::to_string(map);
+    benchmark::RegisterBenchmark(("impl/" + size).c_str(), bench_intocps, robots, map, false)
+        ->Unit(benchmark::kMicrosecond)->MinTime(0.2);
+    benchmark::RegisterBenchmark(("impl1/" + size).c_str(), bench_intocps, robots, map, true)
+        ->Unit(benchmark::kMicrosecond)->MinTime(0.2);
+    if (robots <= 1000)
+      benchmark::RegisterBenchmark(("model/" + size).c_str(), bench_intocps_model, robots, map)
+          ->Unit(benchmark::kMicrosecond)->MinTime(0.2);
+  }
   // 10^6 robots on 1024^2: loading, and steps as the CLI runs them and on one thread.
   benchmark::RegisterBenchmark("load/r1000000/n1024", bench_load, 1'000'000, 1024)->Unit(benchmark::kMillisecond)->Iterations(3);
   benchmark::RegisterBenchmark("impl/abstract/r1000000/n1024", bench_impl, Mode::abstract, 1'000'000, 1024)
