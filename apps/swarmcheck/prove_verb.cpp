@@ -71,12 +71,26 @@ void print_table(const std::vector<ObligationReport>& reports, double total) {
   fmt::print("{:<32} {:<9} {:<9} {:>8}\n", "obligation", "expected", "result", "seconds");
   for (const ObligationReport& r : reports)
     fmt::print("{:<32} {:<9} {:<9} {:>8.3f}{}\n", r.name, proofs::to_string(r.expected),
-               proofs::to_string(r.result), r.seconds, r.met() ? "" : "   <- NOT AS EXPECTED");
+               proofs::to_string(r.result), r.seconds,
+               r.result != r.expected ? "   <- NOT AS EXPECTED"
+               : !r.unread.empty()    ? "   <- DOES NOT READ WHAT THE STEP CALLS"
+                                      : "");
   fmt::print("total {:.3f} s\n", total);
   for (const ObligationReport& r : reports) {
     fmt::print("\n{}: {}\n  {}\n", r.name, r.property, r.detail);
     if (!r.reads.empty()) fmt::print("  reads: {}\n", fmt::join(r.reads, ", "));
+    if (!r.step_calls.empty()) fmt::print("  the step calls: {}\n", fmt::join(r.step_calls, ", "));
+    if (!r.unread.empty()) fmt::print("  NOT READ (the step calls them on the property's path): {}\n", fmt::join(r.unread, ", "));
   }
+}
+
+// The label and time of the query that took longest (where an obligation's time goes).
+Json slowest(const ObligationReport& r) {
+  const proofs::QueryRecord* worst = nullptr;
+  for (const proofs::QueryRecord& q : r.queries)
+    if (!worst || q.seconds > worst->seconds) worst = &q;
+  if (!worst) return nullptr;
+  return Json{{"label", worst->label}, {"seconds", worst->seconds}, {"answer", worst->answer}};
 }
 
 Json report_json(const std::vector<ObligationReport>& reports, double total,
@@ -89,8 +103,10 @@ Json report_json(const std::vector<ObligationReport>& reports, double total,
               {"result", proofs::to_string(r.result)},
               {"met", r.met()},         {"seconds", r.seconds},
               {"queries", r.queries.size()},
+              {"slowest_query", slowest(r)},
               {"detail", r.detail},     {"assumptions", r.assumptions},
-              {"reads", r.reads}};
+              {"reads", r.reads},       {"step_calls", r.step_calls},
+              {"unread", r.unread}};
     if (!traces[k].empty()) j["trace"] = traces[k];
     list.push_back(j);
   }
