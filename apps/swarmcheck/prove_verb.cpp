@@ -26,7 +26,7 @@ struct ProveOptions {
   std::string smt2_dir;
   std::string trace_dir;
   bool json = false;
-  double timeout_s = 45;   // per obligation; the whole suite takes well under this
+  double timeout_s = proofs::kObligationTimeoutS;   // per obligation; each takes far less
 };
 
 std::vector<const proofs::Obligation*> selected(const ProveOptions& o) {
@@ -124,7 +124,7 @@ int run_prove(const ProveOptions& o) {
   std::vector<std::string> traces;
   double total = 0;
   for (const proofs::Obligation* ob : obligations) {
-    reports.push_back(proofs::run_isolated(*ob, o.timeout_s, 20000));
+    reports.push_back(proofs::run_isolated(*ob, o.timeout_s, proofs::kQueryTimeoutMs));
     const ObligationReport& r = reports.back();
     total += r.seconds;
     if (!smt2_dir.empty()) write_smt2(smt2_dir, r);
@@ -157,7 +157,7 @@ void add_prove_verb(CLI::App& app, int& exit_code) {
                   "Write the counterexample trace of each refuted protocol obligation here");
   sub->add_flag("--json", opts->json, "Print the results as JSON");
   sub->add_option("--timeout", opts->timeout_s,
-                  "Seconds per obligation before the watchdog kills its prover (default 45)")
+                  "Seconds per obligation before the watchdog kills its prover (default 120)")
       ->check(CLI::Validator(
           [](const std::string& text) -> std::string {
             // NaN passes every range check, and a huge value overflows the watchdog's deadline.

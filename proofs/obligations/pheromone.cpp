@@ -189,6 +189,7 @@ Check loop_induction(Session& session, Translator& t, const sym::NodePtr& root, 
                      const std::function<Check(const z3::model&)>& on_sat) {
   const bool fp = t.theory() == RealTheory::fp64;
   std::unordered_set<unsigned> asked;
+  std::vector<z3::expr> kept;
   for (const sym::NodePtr& pass : sym::calls_of({root}, fn)) {
     int fresh = 0;   // the same names in every pass: identical passes give identical terms
     std::vector<sym::NodePtr> earlier;
@@ -205,6 +206,7 @@ Check loop_induction(Session& session, Translator& t, const sym::NodePtr& root, 
     z3::expr step = t.node(pass);
     step = step.substitute(from, to);
     if (!asked.insert(step.id()).second) continue;
+    kept.push_back(step);   // alive, so that an identical term later has the same id
     z3::solver s = fp ? session.make_solver() : session.make_nonlinear_solver();
     s.add(context && assumptions && t.side_conditions());
     s.add(!holds(step));

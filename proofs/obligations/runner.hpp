@@ -28,6 +28,9 @@ struct ObligationReport {
   bool met() const { return result == expected && unread.empty(); }
 };
 
+// The watchdog's default: seconds an obligation may take before its prover is killed.
+inline constexpr double kObligationTimeoutS = 120;
+
 // Runs o in a forked child; after timeout_s seconds the child is killed (result unknown).
 // query_timeout_ms bounds each Z3 query inside the child.
 ObligationReport run_isolated(const Obligation& o, double timeout_s, unsigned query_timeout_ms);

@@ -15,12 +15,14 @@ const char* to_string(z3::check_result r) {
 z3::solver Session::make_solver() {
   z3::solver s(ctx_);
   s.set("timeout", timeout_ms_);
+  s.set("rlimit", kQueryRlimit);
   return s;
 }
 
 z3::solver Session::make_nonlinear_solver() {
   z3::solver s = z3::tactic(ctx_, "qfnra-nlsat").mk_solver();
   s.set("timeout", timeout_ms_);
+  s.set("rlimit", kQueryRlimit);
   return s;
 }
 
@@ -34,12 +36,14 @@ z3::solver Session::make_preprocessed_solver() {
                        z3::tactic(ctx_, "simplify") & z3::tactic(ctx_, "smt");
   z3::solver s = t.mk_solver();
   s.set("timeout", timeout_ms_);
+  s.set("rlimit", kQueryRlimit);
   return s;
 }
 
 z3::solver Session::make_smt_solver() {
   z3::solver s = z3::tactic(ctx_, "smt").mk_solver();
   s.set("timeout", timeout_ms_);
+  s.set("rlimit", kQueryRlimit);
   return s;
 }
 

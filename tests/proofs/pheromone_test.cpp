@@ -54,7 +54,7 @@ RC_GTEST_PROP(PheromoneProof, RandomDepositsAndEvaporationStayWithinTheBound, ()
 }
 
 TEST(PheromoneProof, Z3ProvesTheBoundForEveryNumberOfRobotsAndEveryAgeOfAValue) {
-  const ObligationReport r = run_in_process(*find_obligation("pheromone-bounds"), 20000);
+  const ObligationReport r = run_in_process(*find_obligation("pheromone-bounds"), kQueryTimeoutMs);
   EXPECT_EQ(r.result, Verdict::proved) << r.detail;
   for (const QueryRecord& q : r.queries) EXPECT_EQ(q.answer, "unsat") << q.label;
   // Every part ran: the loops' inductions, the deposit pass at each window size, consecution,

@@ -73,7 +73,7 @@ Outcome planted_pheromone(Session& session) {
 TEST(ReadsWhatRuns, APlantedObligationThatSkipsTheDecayFunctionIsNotMet) {
   const Obligation planted{"planted-pheromone", "the pheromone bound, planted", Verdict::proved, {"planted"},
                            planted_pheromone, find_obligation("pheromone-bounds")->step};
-  const ObligationReport r = run_in_process(planted, 20000);
+  const ObligationReport r = run_in_process(planted, kQueryTimeoutMs);
   EXPECT_EQ(r.result, Verdict::proved) << r.detail;
   EXPECT_FALSE(r.met()) << "an obligation that restates the step is met";
   EXPECT_TRUE(contains(r.reads, "exploration::evaporation_factor_rule"));
