@@ -156,14 +156,16 @@ Outcome refuted(const std::string& name, const Variant& v, Encoding& enc, const 
 
 Outcome run_handshake(Session& session, const std::string& name, Variant v, bool strengthen) {
   std::string ks;
+  // A real run that breaks the property, if any, for every robot count first: a lemma that fails
+  // for 1 robot must not hide a run of 2 that the bounded check would have found.
+  for (int n = 1; strengthen && n <= kBmcRobots; ++n) {
+    Encoding plain(session.ctx(), v, n, false, &session);
+    const KInductionResult b = bounded_check(session, plain, bmc_depth(v), fmt::format("n{}", n));
+    if (b.verdict == Verdict::refuted) return refuted(name, v, plain, b, n);
+    if (b.verdict == Verdict::unknown && session.queries().back().answer != "unsat")
+      return {Verdict::unknown, fmt::format("z3 gave up on the bounded check ({} robot(s))", n), {}};
+  }
   for (int n = 1; n <= kMaxRobots; ++n) {
-    if (strengthen && n <= kBmcRobots) {   // a real run that breaks the property, if any
-      Encoding plain(session.ctx(), v, n, false, &session);
-      const KInductionResult b = bounded_check(session, plain, bmc_depth(v), fmt::format("n{}", n));
-      if (b.verdict == Verdict::refuted) return refuted(name, v, plain, b, n);
-      if (b.verdict == Verdict::unknown && session.queries().back().answer != "unsat")
-        return {Verdict::unknown, fmt::format("z3 gave up on the bounded check ({} robot(s))", n), {}};
-    }
     Encoding enc(session.ctx(), v, n, strengthen, &session);
     const KInductionResult r = k_induction(session, enc, kMaxK, fmt::format("n{}", n));
     if (r.verdict == Verdict::refuted && value(*r.model, enc.property(r.depth - 1)))

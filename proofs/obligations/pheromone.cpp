@@ -65,6 +65,11 @@ z3::expr domains(Translator& t, const Parameters& p) {
          t(p.a1) > 0 && t(p.a2) > 0;
 }
 
+// The decay lemmas mention no deposit parameter, so asking them with a positive max_ph changes
+// no verdict; it makes a counterexample's deposits non-zero, so that the replay from an empty map
+// has pheromone for the faulty decay to keep (with max_ph = epsilon = 0 every bound is 0 and met).
+z3::expr deposits_visible(Translator& t, const Parameters& p) { return t(p.max_ph) > 0; }
+
 // B for R robots: bound * min(1, ertu dt) = R (max_ph + epsilon / a2), division-free for nlsat.
 z3::expr bound_of(Translator& t, const Parameters& p, const z3::expr& robots, const z3::expr& bound) {
   const z3::expr c = t(p.ertu) * t(p.dt);
@@ -226,14 +231,15 @@ Check check_table(Session& session) {
   const z3::expr c = t(p.ertu) * t(p.dt);
   {  // P[0] = f is in [0, 1] and leaves the decay the bound needs: f + min(1, ertu dt) <= 1.
     z3::solver s = session.make_nonlinear_solver();
-    s.add(domains(t, p) && t.side_conditions());
+    s.add(domains(t, p) && deposits_visible(t, p) && t.side_conditions());
     s.add(!(zero <= f && f <= one && f + z3::ite(c < 1, c, one) <= one));
     const z3::check_result r = session.check(s, "decay-factor-f");
     if (r == z3::sat) return settle(s.get_model(), t, p, "decay-factor-f", exploration::RuleSet::deterministic, 1);
     if (r != z3::unsat) return {r, ""};
   }
   return loop_induction(
-      session, t, table.pow2.back().node(), "exploration::make_decay_table", domains(t, p) && zero <= f && f <= one,
+      session, t, table.pow2.back().node(), "exploration::make_decay_table",
+      domains(t, p) && deposits_visible(t, p) && zero <= f && f <= one,
       [&](const z3::expr& q) { return zero <= q && q <= f; }, [&](const z3::expr& x) { return zero <= x && x <= f; },
       "decay-table", [&](const z3::model& m) {
         return settle(m, t, p, "decay-table", exploration::RuleSet::deterministic, 1);
@@ -248,7 +254,7 @@ Check check_factor(Session& session) {
   exploration::DecayTableT<S> table;
   for (std::size_t i = 0; i < table.pow2.size(); ++i) table.pow2[i] = sym::Real::var(fmt::format("P_{}", i));
   const z3::expr f = t(p.f()), zero = t.ctx().real_val(0), one = t.ctx().real_val(1);
-  z3::expr entries = domains(t, p) && zero <= f && f <= one;
+  z3::expr entries = domains(t, p) && deposits_visible(t, p) && zero <= f && f <= one;
   for (const sym::Real& e : table.pow2) entries = entries && zero <= t(e) && t(e) <= f;
   const sym::Real f0 = exploration::decay_factor_rule<S>(table, 0);
   if (!(f0.is_literal() && f0.literal() == 1.0))
