@@ -26,7 +26,7 @@ struct ProveOptions {
   std::string smt2_dir;
   std::string trace_dir;
   bool json = false;
-  double timeout_s = 45;   // per obligation; the whole suite takes well under this
+  double timeout_s = proofs::kObligationTimeoutS;   // per obligation; each takes far less
 };
 
 std::vector<const proofs::Obligation*> selected(const ProveOptions& o) {
@@ -71,12 +71,26 @@ void print_table(const std::vector<ObligationReport>& reports, double total) {
   fmt::print("{:<32} {:<9} {:<9} {:>8}\n", "obligation", "expected", "result", "seconds");
   for (const ObligationReport& r : reports)
     fmt::print("{:<32} {:<9} {:<9} {:>8.3f}{}\n", r.name, proofs::to_string(r.expected),
-               proofs::to_string(r.result), r.seconds, r.met() ? "" : "   <- NOT AS EXPECTED");
+               proofs::to_string(r.result), r.seconds,
+               r.result != r.expected ? "   <- NOT AS EXPECTED"
+               : !r.unread.empty()    ? "   <- DOES NOT READ WHAT THE STEP CALLS"
+                                      : "");
   fmt::print("total {:.3f} s\n", total);
   for (const ObligationReport& r : reports) {
     fmt::print("\n{}: {}\n  {}\n", r.name, r.property, r.detail);
     if (!r.reads.empty()) fmt::print("  reads: {}\n", fmt::join(r.reads, ", "));
+    if (!r.step_calls.empty()) fmt::print("  the step calls: {}\n", fmt::join(r.step_calls, ", "));
+    if (!r.unread.empty()) fmt::print("  NOT READ (the step calls them on the property's path): {}\n", fmt::join(r.unread, ", "));
   }
+}
+
+// The label and time of the query that took longest (where an obligation's time goes).
+Json slowest(const ObligationReport& r) {
+  const proofs::QueryRecord* worst = nullptr;
+  for (const proofs::QueryRecord& q : r.queries)
+    if (!worst || q.seconds > worst->seconds) worst = &q;
+  if (!worst) return nullptr;
+  return Json{{"label", worst->label}, {"seconds", worst->seconds}, {"answer", worst->answer}};
 }
 
 Json report_json(const std::vector<ObligationReport>& reports, double total,
@@ -89,8 +103,10 @@ Json report_json(const std::vector<ObligationReport>& reports, double total,
               {"result", proofs::to_string(r.result)},
               {"met", r.met()},         {"seconds", r.seconds},
               {"queries", r.queries.size()},
+              {"slowest_query", slowest(r)},
               {"detail", r.detail},     {"assumptions", r.assumptions},
-              {"reads", r.reads}};
+              {"reads", r.reads},       {"step_calls", r.step_calls},
+              {"unread", r.unread}};
     if (!traces[k].empty()) j["trace"] = traces[k];
     list.push_back(j);
   }
@@ -108,7 +124,7 @@ int run_prove(const ProveOptions& o) {
   std::vector<std::string> traces;
   double total = 0;
   for (const proofs::Obligation* ob : obligations) {
-    reports.push_back(proofs::run_isolated(*ob, o.timeout_s, 20000));
+    reports.push_back(proofs::run_isolated(*ob, o.timeout_s, proofs::kQueryTimeoutMs));
     const ObligationReport& r = reports.back();
     total += r.seconds;
     if (!smt2_dir.empty()) write_smt2(smt2_dir, r);
@@ -141,7 +157,7 @@ void add_prove_verb(CLI::App& app, int& exit_code) {
                   "Write the counterexample trace of each refuted protocol obligation here");
   sub->add_flag("--json", opts->json, "Print the results as JSON");
   sub->add_option("--timeout", opts->timeout_s,
-                  "Seconds per obligation before the watchdog kills its prover (default 45)")
+                  "Seconds per obligation before the watchdog kills its prover (default 120)")
       ->check(CLI::Validator(
           [](const std::string& text) -> std::string {
             // NaN passes every range check, and a huge value overflows the watchdog's deadline.

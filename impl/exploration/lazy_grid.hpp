@@ -124,21 +124,20 @@ class LazyGrid {
   double current(std::size_t k, int64_t tick) const { return current_of(cells_[k], tick); }
   // The one place a deposit writes a cell (deposit() and deposit_window()).
   void deposit_at(CellData& cell, int64_t tick, double amount) {
-    cell.value = current_of(cell, tick) + amount;
+    cell.value = swarmcheck::exploration::deposited_pheromone(current_of(cell, tick), amount);
     cell.written = static_cast<int32_t>(tick);
   }
   double current_of(const CellData& c, int64_t tick) const {
     if (dense_ || c.value == 0.0) return c.value;   // +0 * F(k) = +0: F(k) >= 0 is finite
-    return c.value * decay(tick - c.written);
+    return swarmcheck::exploration::decayed_pheromone(c.value, decay(tick - c.written));
   }
   // F(age), bit for bit the spec's: F multiplies P[i] over the set bits of age in increasing i,
-  // so the table's F(age mod 4096) is exactly the product so far, continued over the high bits.
+  // so the table's F(age mod 4096) is exactly the product so far, continued over the high bits by
+  // the spec's own loop (decay_factor_from, which the proofs take by induction).
   double decay(int64_t age) const {
-    double acc = decay_cache_[static_cast<std::size_t>(age & (kDecayCacheSize - 1))];
-    auto bits = static_cast<uint64_t>(age) >> kDecayCacheBits;
-    for (std::size_t i = kDecayCacheBits; bits != 0; ++i, bits >>= 1)
-      if (bits & 1U) acc *= decay_->pow2[i];
-    return acc;
+    const double low = decay_cache_[static_cast<std::size_t>(age & (kDecayCacheSize - 1))];
+    const uint64_t high = static_cast<uint64_t>(age) >> kDecayCacheBits;
+    return high == 0 ? low : swarmcheck::exploration::decay_factor_from(*decay_, low, high, kDecayCacheBits);
   }
   bool obstacle(std::size_t k) const { return cells_[k].occupancy & kObstacleBit; }
   // An obstacle or a robot: any bit but `visited`.

@@ -21,7 +21,7 @@ void DenseGrid::evaporate(int64_t tick) {
       value_[k] = current_[k];
       written_[k] = tick_;
     } else {
-      current_[k] = value_[k] * decay_factor(cfg_->decay, tick_ - written_[k]);
+      current_[k] = decayed_pheromone(value_[k], decay_factor(cfg_->decay, tick_ - written_[k]));
     }
   }
 }
@@ -29,7 +29,7 @@ void DenseGrid::evaporate(int64_t tick) {
 void DenseGrid::deposit(CellIndex c, int64_t tick, double amount) {
   SWARM_DEMAND(tick == tick_);
   const Eigen::Index k = index(c);
-  current_[k] = current_[k] + amount;
+  current_[k] = deposited_pheromone(current_[k], amount);
   value_[k] = current_[k];
   written_[k] = tick_;
 }

@@ -25,14 +25,18 @@ z3::expr magnitude(const z3::expr& v) { return z3::ite(v < 0, -v, v); }
 // without it (the raw deltas).
 template <class D>
 typename D::Real bearing(const exploration::DeltaT<D>& d, const typename D::Real& tol, bool fix) {
-  const exploration::DeltaT<D> f = fix ? exploration::atan2_fix_rule<D>(d, tol) : d;
-  return num::atan2(f.dy, f.dx);
+  if (!fix) return num::atan2(d.dy, d.dx);
+  const exploration::DeltaT<D> f = exploration::atan2_fix_rule<D>(d, tol);
+  constexpr const char* fn = "exploration::atan2_fix_rule";
+  return num::atan2(num::traced(fn, f.dy), num::traced(fn, f.dx));
 }
 
+// How many spurious counterexamples are blocked and asked again before the verdict is unknown.
+constexpr int kChaseBudget = 8;
+
 Outcome run_atan2(Session& session, bool fix) {
-  z3::context& c = session.ctx();
   const exploration::RobotParams rp;
-  Translator t(c, RealTheory::real);
+  Translator t(session, RealTheory::real);
   z3::solver s = session.make_nonlinear_solver();
   const sym::Real tol_s(rp.tolerance_m);
   const exploration::DeltaT<S> p1{sym::Real::var("dx1"), sym::Real::var("dy1")};
@@ -47,27 +51,44 @@ Outcome run_atan2(Session& session, bool fix) {
   s.add(t.side_conditions());
   // The property: the bearings differ by less than pi (the double nearest pi).
   s.add(!(magnitude(b1 - b2) < t(sym::Real(M_PI))));
-  switch (session.check(s, fix ? "with-fix" : "without-fix")) {
-    case z3::unsat:
-      return {Verdict::proved, "unsat: the bearing cannot jump by pi or more within the strip", {}};
-    case z3::sat: {
-      const z3::model m = s.get_model();
-      const double x1 = model_double(m, dx1), y1 = model_double(m, dy1), x2 = model_double(m, dx2),
-                   y2 = model_double(m, dy2);
-      // Replay through the executed code: the concrete instantiation of the same rule.
-      const double a1 = bearing<C>({x1, y1}, rp.tolerance_m, fix), a2 = bearing<C>({x2, y2}, rp.tolerance_m, fix);
-      const bool confirmed = std::fabs(a1 - a2) >= M_PI;
-      return {confirmed ? Verdict::refuted : Verdict::unknown,
-              fmt::format("sat: deltas ({:.6g}, {:.6g}) and ({:.6g}, {:.6g}) give bearings {:.6f} and {:.6f} "
-                          "({})",
-                          x1, y1, x2, y2, a1, a2,
-                          confirmed ? "confirmed by running atan2_fix_rule and std::atan2"
-                                    : "NOT reproduced by the executed code: a spurious counterexample"),
-              {}};
+  // A model that the executed code does not reproduce (its uninterpreted atan2 values are not
+  // what std::atan2 gives at the nearest doubles) is blocked and Z3 asked again.
+  std::string blocked;
+  for (int round = 0; round <= kChaseBudget; ++round) {
+    const std::string label = fmt::format("{}{}", fix ? "with-fix" : "without-fix", round == 0 ? "" : fmt::format("-{}", round));
+    switch (session.check(s, label)) {
+      case z3::unsat:
+        return {Verdict::proved,
+                "unsat: the bearing cannot jump by pi or more within the strip" +
+                    (blocked.empty() ? std::string() : " (after blocking spurious models:" + blocked + ")"),
+                {}};
+      case z3::sat: {
+        const z3::model m = s.get_model();
+        const double x1 = model_double(m, dx1), y1 = model_double(m, dy1), x2 = model_double(m, dx2),
+                     y2 = model_double(m, dy2);
+        // Replay through the executed code: the concrete instantiation of the same rule.
+        const double a1 = bearing<C>({x1, y1}, rp.tolerance_m, fix), a2 = bearing<C>({x2, y2}, rp.tolerance_m, fix);
+        if (std::fabs(a1 - a2) >= M_PI)
+          return {Verdict::refuted,
+                  fmt::format("sat: deltas ({:.6g}, {:.6g}) and ({:.6g}, {:.6g}) give bearings {:.6f} and {:.6f} "
+                              "(confirmed by running atan2_fix_rule and std::atan2{})",
+                              x1, y1, x2, y2, a1, a2,
+                              blocked.empty() ? "" : "; spurious models blocked first:" + blocked),
+                  {}};
+        // Spurious: block this model's deltas (exactly its values) and ask again.
+        blocked += fmt::format(" ({:.3g}, {:.3g}) / ({:.3g}, {:.3g})", x1, y1, x2, y2);
+        s.add(!(dx1 == m.eval(dx1, true) && dy1 == m.eval(dy1, true) && dx2 == m.eval(dx2, true) &&
+                dy2 == m.eval(dy2, true)));
+        break;
+      }
+      default:
+        return {Verdict::unknown, "z3: unknown (" + s.reason_unknown() + ")", {}};
     }
-    default:
-      return {Verdict::unknown, "z3: unknown (" + s.reason_unknown() + ")", {}};
   }
+  return {Verdict::unknown,
+          fmt::format("{} spurious counterexamples in a row (NOT reproduced by the executed code), the chase's budget:{}",
+                      kChaseBudget + 1, blocked),
+          {}};
 }
 
 }  // namespace
@@ -82,20 +103,19 @@ std::vector<Obligation> atan2_obligations() {
       "atan2 is uninterpreted, Ackermannized: one real per application with its range [-pi_d, "
       "pi_d] (pi_d the double nearest pi) and sign / quadrant facts, plus functional consistency",
       "reals, not doubles: a counterexample counts only when the doubles nearest its values "
-      "reproduce it through the executed code",
+      "reproduce it through the executed code; a model they do not reproduce is blocked (its exact "
+      "deltas excluded) and Z3 asked again, up to 8 times, before the verdict is unknown",
   };
   return {
       Obligation{"atan2-fix",
                  "In maneuver 1, at two positions closer than the tolerance in one deadband strip "
                  "around the waypoint, the fixed bearing atan2(dy', dx') differs by less than pi "
                  "(it never flips across the +-pi cut, so beta cannot flip sign).",
-                 Verdict::proved, assumptions, [](Session& s) { return run_atan2(s, true); },
-                 {"exploration::atan2_fix_rule"}},
+                 Verdict::proved, assumptions, [](Session& s) { return run_atan2(s, true); }, {}},
       Obligation{"atan2-without-fix",
                  "The same property for the raw deltas (no fix): refuted, the bearing flips from "
                  "about +pi to -pi when the waypoint is behind the robot on its axis.",
-                 Verdict::refuted, assumptions, [](Session& s) { return run_atan2(s, false); },
-                 {}},
+                 Verdict::refuted, assumptions, [](Session& s) { return run_atan2(s, false); }, {}},
   };
 }
 

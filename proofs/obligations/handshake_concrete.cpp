@@ -5,54 +5,81 @@
 
 #include "spec/exploration/controller.hpp"
 #include "spec/exploration/handshake.hpp"
+#include "spec/exploration/master.hpp"
 
 namespace swarmcheck::proofs::handshake {
 namespace {
 
 using C = num::Concrete;
 
-// A controller step: the new internal output; sets accept.
-ControllerPort controller(const Variant& v, const exploration::RobotParams& rp, ConcreteState& s,
-                          std::size_t i, bool env_out, int32_t env_epoch, const RobotInput& in, StepEvents& ev) {
-  ControllerPort p = s.internal[i];
-  const exploration::BodyState pose{in.x_m, in.y_m, in.theta_rad};
-  const exploration::Point_m wp{s.x_desired_m[i], s.y_desired_m[i]};
-  if (v.protocol == Protocol::flag) {
-    const exploration::ControllerState before = s.ctrl[i];
-    s.ctrl[i] = exploration::controller_step(rp, before,
-                                             exploration::ControllerInputs{pose, wp, env_out ? 1 : 0, kHandshakeStep_s});
-    p.out = s.ctrl[i].on_destination_output == 1;
-    ev.accept[i] = before.on_destination_output == 1 && !p.out;
-    return p;
-  }
-  const bool arrived = exploration::arrived_rule<C>({wp[0] - pose.x_m, wp[1] - pose.y_m}, rp.tolerance_m);
-  const exploration::EpochControllerT<C> n = exploration::epoch_controller_rule<C>({p.ack, p.done}, env_epoch, arrived);
-  ev.accept[i] = n.ack != p.ack;
-  p.ack = n.ack;
-  p.done = n.done;
-  return p;
-}
+// The systems master_step runs for the replay: the concrete counterparts of handshake_system.hpp,
+// each controller through controller_step (flag) or arrived_rule and epoch_controller_rule
+// (epoch), the Environment through handshake_stage (flag) or epoch_environment_rule (epoch).
+struct FlagSystem {
+  const exploration::RobotParams& rp;
+  ConcreteState& s;
+  const std::vector<RobotInput>& in;
+  StepEvents& ev;
+  bool late;
+  std::vector<exploration::ControllerState> ports;   // what the Environment reads: onDestinationOutput
 
-// The Environment's step, reading the controllers' ports; returns whether it plans.
-bool environment(const Variant& v, ConcreteState& s, const std::vector<ControllerPort>& ports) {
-  const std::size_t n = ports.size();
-  if (v.protocol == Protocol::flag) {
-    const bool all = exploration::all_arrived_rule<C>(n, [&](std::size_t k) { return ports[k].out; });
-    const exploration::HandshakeStep hs = exploration::environment_handshake(s.env, all);
-    s.env = hs.next;
-    return hs.plan;
+  std::span<const exploration::ControllerState> controllers() const { return ports; }
+  int32_t environment_output() const { return s.env.on_destination_output; }
+  void robots_step(int32_t env_output) {
+    for (std::size_t i = 0; i < s.ctrl.size(); ++i) {
+      const exploration::ControllerState before = s.ctrl[i];
+      s.ctrl[i] = exploration::controller_step(
+          rp, before,
+          exploration::ControllerInputs{{in[i].x_m, in[i].y_m, in[i].theta_rad}, {s.x_desired_m[i], s.y_desired_m[i]},
+                                        env_output, kHandshakeStep_s});
+      ev.accept[i] = before.on_destination_output == 1 && s.ctrl[i].on_destination_output == 0;
+      s.internal[i].out = s.ctrl[i].on_destination_output == 1;
+      s.port[i].out = (late ? before.on_destination_output : s.ctrl[i].on_destination_output) == 1;
+      ports[i].on_destination_output = s.port[i].out ? 1 : 0;
+    }
   }
-  std::vector<int32_t> acks(n);
-  const std::unique_ptr<bool[]> done(new bool[n]);
-  for (std::size_t k = 0; k < n; ++k) {
-    acks[k] = ports[k].ack;
-    done[k] = ports[k].done;
+  void environment_step(bool arrived) { ev.plan = exploration::handshake_stage(exploration::Mode::cosim, s.env, arrived); }
+  void place_bodies_on_waypoints() {}
+};
+
+struct EpochSystem {
+  const exploration::RobotParams& rp;
+  ConcreteState& s;
+  const std::vector<RobotInput>& in;
+  StepEvents& ev;
+  bool late;
+  std::vector<exploration::EpochPortT<C>> ports;
+
+  std::span<const exploration::EpochPortT<C>> controllers() const { return ports; }
+  int32_t environment_output() const { return s.epoch; }
+  void robots_step(int32_t env_epoch) {
+    for (std::size_t i = 0; i < s.internal.size(); ++i) {
+      const ControllerPort before = s.internal[i];
+      const bool arrived = exploration::arrived_rule<C>(
+          {s.x_desired_m[i] - in[i].x_m, s.y_desired_m[i] - in[i].y_m}, rp.tolerance_m);
+      const exploration::EpochControllerT<C> n =
+          exploration::epoch_controller_rule<C>({before.ack, before.done}, env_epoch, arrived);
+      ev.accept[i] = n.ack != before.ack;
+      s.internal[i].ack = n.ack;
+      s.internal[i].done = n.done;
+      s.port[i] = late ? before : s.internal[i];
+      ports[i] = {s.port[i].ack, s.port[i].done};
+    }
   }
-  const exploration::EpochStepT<C> e =
-      exploration::epoch_environment_rule<C>(s.epoch, acks, std::span<const bool>(done.get(), n));
-  s.epoch = e.epoch;
-  return e.plan;
-}
+  void environment_step(const std::vector<exploration::EpochPortT<C>>& read) {
+    std::vector<int32_t> acks;
+    const std::unique_ptr<bool[]> done(new bool[read.size()]);
+    for (std::size_t k = 0; k < read.size(); ++k) {
+      acks.push_back(read[k].ack);
+      done[k] = read[k].done;
+    }
+    const exploration::EpochStepT<C> e =
+        exploration::epoch_environment_rule<C>(s.epoch, acks, std::span<const bool>(done.get(), read.size()));
+    s.epoch = e.epoch;
+    ev.plan = e.plan;
+  }
+  void place_bodies_on_waypoints() {}
+};
 
 }  // namespace
 
@@ -82,18 +109,24 @@ StepEvents step(const Variant& v, const exploration::RobotParams& rp, ConcreteSt
   StepEvents ev;
   ev.accept.assign(n, false);
   ev.at_waypoint.assign(n, false);
-  // Every component reads the outputs of the previous step (Jacobi); under Gauss-Seidel the
-  // controllers step first and the Environment reads their new outputs.
-  const bool env_out = s.env.on_destination_output == 1;
-  const int32_t env_epoch = s.epoch;
-  std::vector<ControllerPort> next(n);
-  for (std::size_t i = 0; i < n; ++i) {
+  for (std::size_t i = 0; i < n; ++i)
     ev.at_waypoint[i] = at_waypoint(in[i].x_m, in[i].y_m, s.x_desired_m[i], s.y_desired_m[i], rp.tolerance_m);
-    next[i] = controller(v, rp, s, i, env_out, env_epoch, in[i], ev);
+  // The master that runs: spec's master_step, in the variant's order.
+  const exploration::MasterOrder order =
+      v.master == Master::jacobi ? exploration::MasterOrder::jacobi : exploration::MasterOrder::gauss_seidel;
+  if (v.protocol == Protocol::flag) {
+    FlagSystem sys{rp, s, in, ev, v.late_controller, {}};
+    for (const ControllerPort& p : s.port) {
+      exploration::ControllerState c = exploration::initial_controller();
+      c.on_destination_output = p.out ? 1 : 0;
+      sys.ports.push_back(c);
+    }
+    exploration::master_step(exploration::Mode::cosim, sys, order);
+  } else {
+    EpochSystem sys{rp, s, in, ev, v.late_controller, {}};
+    for (const ControllerPort& p : s.port) sys.ports.push_back({p.ack, p.done});
+    exploration::master_step(exploration::Mode::cosim, sys, order);
   }
-  std::vector<ControllerPort> next_port(n);
-  for (std::size_t i = 0; i < n; ++i) next_port[i] = v.late_controller ? s.internal[i] : next[i];
-  ev.plan = environment(v, s, v.master == Master::jacobi ? s.port : next_port);
   for (std::size_t i = 0; i < n; ++i) {
     const bool reached_now = s.reached[i] || ev.at_waypoint[i];
     if (ev.plan && !reached_now && ev.violated.empty()) ev.violated = "no-early-plan";
@@ -105,8 +138,6 @@ StepEvents step(const Variant& v, const exploration::RobotParams& rp, ConcreteSt
       s.y_desired_m[i] = in[i].new_y_desired_m;
     }
   }
-  s.internal = next;
-  s.port = next_port;
   return ev;
 }
 

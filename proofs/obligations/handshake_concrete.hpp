@@ -32,6 +32,9 @@ struct Variant {
   Master master = Master::jacobi;
   Protocol protocol = Protocol::flag;
   bool late_controller = false;   // each controller's output reaches the Environment a step late
+  // The proof for every number of robots (Encoding only): robot 0 stands for any one robot, robot
+  // 1 for all the others, its state and port free in every step; the properties are robot 0's.
+  bool representative = false;
 };
 
 const char* to_string(Master m);   // "jacobi", "gauss-seidel"

@@ -15,12 +15,14 @@
 #include <fmt/format.h>
 #include <vector>
 
-#include "proofs/obligations/handshake_concrete.hpp"
+#include "proofs/obligations/handshake_lemmas.hpp"
+#include "proofs/obligations/handshake_system.hpp"
 #include "proofs/obligations/kinduction.hpp"
 #include "proofs/obligations/obligation.hpp"
 #include "proofs/obligations/translate.hpp"
 #include "spec/exploration/controller.hpp"
 #include "spec/exploration/handshake.hpp"
+#include "spec/exploration/master.hpp"
 
 namespace swarmcheck::proofs {
 namespace {
@@ -48,14 +50,14 @@ bool enumerate_moves(Session& session, MoveTable& table) {
   for (int out = 0; out < 2; ++out)
     for (int drv = 0; drv < 2; ++drv)
       for (int eo = 0; eo < 2; ++eo) {
-        Translator t(c, RealTheory::real, false);
+        Translator t(session, RealTheory::real, false);
         exploration::ControllerParamsT<S> p = exploration::symbolic_controller_params(exploration::RobotParams{});
         p.tolerance_m = sym::Real::var("tolerance");
         p.orient_tolerance_rad = sym::Real::var("orient_tolerance");
         p.reorient_rad = sym::Real::var("reorient");
         const sym::Real x = sym::Real::var("x"), y = sym::Real::var("y"), theta = sym::Real::var("theta"),
                         wx = sym::Real::var("wx"), wy = sym::Real::var("wy");
-        const exploration::ControllerCoreT<S> after = exploration::controller_rule<S>(
+        const exploration::ControllerCoreT<S> after = handshake::traced_controller_rule(
             p,
             {sym::Bool(out == 1), sym::Bool(drv == 1), sym::Real::var("beta"), sym::Real(0.0), sym::Real(0.0),
              sym::Real::var("target")},
@@ -78,9 +80,25 @@ bool enumerate_moves(Session& session, MoveTable& table) {
   return true;
 }
 
+// The controllers as master_step sees them in the counter abstraction: the counts of the
+// classes whose output is lowered.
+struct CountedControllers {
+  std::vector<z3::expr> lowered;
+};
+
+// What the Environment reads of counted controllers (master_step's environment_input): all
+// arrived iff no controller has a lowered output. all-arrived-any-robots proves all_arrived_rule
+// is exactly that for every number of controllers (run first, below).
+z3::expr environment_input(const CountedControllers& c) {
+  z3::expr n = c.lowered.front().ctx().int_val(0);
+  for (const z3::expr& x : c.lowered) n = n + x;
+  return n == 0;
+}
+
 class CounterEncoding : public TransitionSystem {
  public:
-  CounterEncoding(z3::context& c, const MoveTable& moves) : c_(c), moves_(moves), n_(c.int_const("robots")) {}
+  CounterEncoding(Session& session, const MoveTable& moves)
+      : session_(&session), c_(session.ctx()), moves_(moves), n_(c_.int_const("robots")) {}
 
   z3::expr init(int t) override {
     z3::expr r = flag(t) && !eout(t) && n_ >= 1;
@@ -131,49 +149,93 @@ class CounterEncoding : public TransitionSystem {
   }
 
   StepTerms make_step(int t) {
-    Translator tr(c_, RealTheory::real, false);
-    // The Environment reads the outputs of the previous step (Jacobi): all arrived when no
-    // controller has a lowered output; it plans by the spec's rule.
-    z3::expr lowered = c_.int_val(0);
-    for (int k = 0; k < kClasses; ++k)
-      if (!class_of(k).out) lowered = lowered + count(t, k);
-    const sym::Bool all = sym::Bool::var(fmt::format("all@{}", t));
-    const exploration::HandshakeStepT<S> hs = exploration::environment_handshake_rule<S>(
-        {sym::Bool::var(fmt::format("flag@{}", t)), sym::Bool::var(fmt::format("env_out@{}", t))},
-        exploration::all_arrived_rule<S>(1, [&](std::size_t) { return all; }));
-    const z3::expr plan = tr(hs.plan);
-    z3::expr eq = tr(all) == (lowered == 0) && flag(t + 1) == tr(hs.next.flag) && eout(t + 1) == tr(hs.next.output);
+    Translator tr(*session_, RealTheory::real, false);
+    CounterSystem sys{*this, tr, t, c_.bool_val(true), c_.bool_val(false), {}, false};
+    // spec's master_step, Jacobi: the Environment reads the counts as of the step's start.
+    exploration::master_step(exploration::Mode::cosim, sys);
+    z3::expr eq = sys.eq;
     std::vector<z3::expr> inflow(kClasses, c_.int_val(0));
     z3::expr early = c_.int_val(0), stale = c_.int_val(0);
-    for (int k = 0; k < kClasses; ++k) {
-      const LocalClass l = class_of(k);
-      z3::expr out_of_k = c_.int_val(0);
-      for (int eo = 0; eo < 2; ++eo) {
-        const auto& mv = moves_[l.out ? 1 : 0][l.driving ? 1 : 0][static_cast<std::size_t>(eo)];
-        for (std::size_t j = 0; j < mv.size(); ++j) {
-          const z3::expr f = c_.int_const(fmt::format("flow_{}_{}_{}@{}", k, eo, j, t).c_str());
-          eq = eq && f >= 0 && z3::implies(eout(t) != c_.bool_val(eo == 1), f == 0);
-          out_of_k = out_of_k + f;
-          const bool accept = l.out && !mv[j].out;
-          const bool reached_now = l.reached || mv[j].at;
-          // The ghosts after the step, with and without a plan.
-          const int to_plan = class_index(mv[j].out, mv[j].driving, false, true);
-          const int to_wait = class_index(mv[j].out, mv[j].driving, reached_now, l.fresh && !accept);
-          for (int q = 0; q < kClasses; ++q) {
-            // Linear: a select of the flow or 0, never a product with a select.
-            const z3::expr in = z3::ite(plan, q == to_plan ? f : c_.int_val(0), q == to_wait ? f : c_.int_val(0));
-            inflow[static_cast<std::size_t>(q)] = inflow[static_cast<std::size_t>(q)] + in;
-          }
-          if (!reached_now) early = early + f;
-          if (accept && !l.fresh) stale = stale + f;
-        }
+    for (const Flow& fl : sys.flows) {
+      // The ghosts after the step, with and without a plan.
+      const int to_plan = class_index(fl.move.out, fl.move.driving, false, true);
+      const int to_wait = class_index(fl.move.out, fl.move.driving, fl.reached_now, fl.fresh_kept);
+      for (int q = 0; q < kClasses; ++q) {
+        // Linear: a select of the flow or 0, never a product with a select.
+        const z3::expr in = z3::ite(sys.plan, q == to_plan ? fl.f : c_.int_val(0), q == to_wait ? fl.f : c_.int_val(0));
+        inflow[static_cast<std::size_t>(q)] = inflow[static_cast<std::size_t>(q)] + in;
       }
-      eq = eq && out_of_k == count(t, k);
+      if (!fl.reached_now) early = early + fl.f;
+      if (fl.accept && !fl.from_fresh) stale = stale + fl.f;
     }
     for (int q = 0; q < kClasses; ++q) eq = eq && count(t + 1, q) == inflow[static_cast<std::size_t>(q)];
-    return {eq && tr.side_conditions(), plan && early > 0, stale > 0};
+    return {eq && tr.side_conditions(), sys.plan && early > 0, stale > 0};
   }
 
+  // A flow of `f` controllers of one class along one local step.
+  struct Flow {
+    z3::expr f;
+    ControllerMove move;
+    bool accept, reached_now, fresh_kept, from_fresh;
+  };
+
+  // The system master_step runs on the counts: controllers() are the counts, read by
+  // environment_input below; robots_step moves them along the local steps of controller_rule;
+  // environment_step is the spec's handshake_stage_rule.
+  struct CounterSystem {
+    CounterEncoding& enc;
+    Translator& tr;
+    int t;
+    z3::expr eq = enc.c_.bool_val(true);
+    z3::expr plan = enc.c_.bool_val(false);
+    std::vector<Flow> flows;
+    bool stepped = false;
+
+    // Before robots_step: the counts at the step's start; after it (a master that reads the new
+    // outputs): the controllers that moved to a lowered output.
+    CountedControllers controllers() const {
+      std::vector<z3::expr> lowered;
+      if (stepped) {
+        for (const Flow& fl : flows)
+          if (!fl.move.out) lowered.push_back(fl.f);
+      } else {
+        for (int k = 0; k < kClasses; ++k)
+          if (!class_of(k).out) lowered.push_back(enc.count(t, k));
+      }
+      if (lowered.empty()) lowered.push_back(enc.c_.int_val(0));
+      return CountedControllers{lowered};
+    }
+    z3::expr environment_output() const { return enc.eout(t); }
+    void robots_step(const z3::expr& env_output) {
+      for (int k = 0; k < kClasses; ++k) {
+        const LocalClass l = class_of(k);
+        z3::expr out_of_k = enc.c_.int_val(0);
+        for (int eo = 0; eo < 2; ++eo) {
+          const auto& mv = enc.moves_[l.out ? 1 : 0][l.driving ? 1 : 0][static_cast<std::size_t>(eo)];
+          for (std::size_t j = 0; j < mv.size(); ++j) {
+            const z3::expr f = enc.c_.int_const(fmt::format("flow_{}_{}_{}@{}", k, eo, j, t).c_str());
+            eq = eq && f >= 0 && z3::implies(env_output != enc.c_.bool_val(eo == 1), f == 0);
+            out_of_k = out_of_k + f;
+            const bool accept = l.out && !mv[j].out;
+            flows.push_back({f, mv[j], accept, l.reached || mv[j].at, l.fresh && !accept, l.fresh});
+          }
+        }
+        eq = eq && out_of_k == enc.count(t, k);
+      }
+      stepped = true;
+    }
+    void environment_step(const z3::expr& arrived) {
+      // The master's reading, named as master_step's, is all_arrived over the counted controllers.
+      const sym::Bool all = num::traced("exploration::master_step", sym::Bool::var(fmt::format("all@{}", t)));
+      eq = eq && tr(all) == arrived;
+      exploration::HandshakeStateT<S> hs{sym::Bool::var(fmt::format("flag@{}", t)), sym::Bool::var(fmt::format("env_out@{}", t))};
+      plan = tr(exploration::handshake_stage_rule<S>(exploration::Mode::cosim, hs, all));
+      eq = eq && enc.flag(t + 1) == tr(hs.flag) && enc.eout(t + 1) == tr(hs.output);
+    }
+    void place_bodies_on_waypoints() {}
+  };
+
+  Session* session_;
   z3::context& c_;
   const MoveTable& moves_;
   z3::expr n_;
@@ -181,10 +243,11 @@ class CounterEncoding : public TransitionSystem {
 };
 
 Outcome run_counter(Session& session) {
+  if (auto o = handshake::all_arrived_lemma(session)) return *o;
   MoveTable moves;
   if (!enumerate_moves(session, moves))
     return {Verdict::unknown, "z3 gave up enumerating the controller's local steps", {}};
-  CounterEncoding enc(session.ctx(), moves);
+  CounterEncoding enc(session, moves);
   const KInductionResult r = k_induction(session, enc, 4, "counter");
   if (r.verdict == Verdict::proved)
     return {Verdict::proved,
@@ -213,13 +276,14 @@ std::vector<Obligation> handshake_counter_obligations() {
        "controllers in each local class (output, maneuver, reached, fresh); the number of robots is a free integer >= 1",
        "the local steps are enumerated by Z3 from the spec's controller_rule, each controller with its own free pose, "
        "heading, waypoint and tolerances (so the tolerances are not shared: more behaviours than a real run)",
-       "the Environment plans through environment_handshake_rule and all_arrived_rule, with all arrived when no "
-       "controller has a lowered output (the Jacobi master reads last step's outputs)",
+       "a step is spec's master_step (Jacobi: the Environment reads the counts as of the step's start) on the counts: "
+       "environment_input of counted controllers is \"no lowered output\", which all-arrived-any-robots proves "
+       "all_arrived_rule is for every number of controllers (its queries run first here); the Environment plans "
+       "through handshake_stage_rule (environment_handshake_rule)",
        "k-induction with the counting form of the hand-derived lemma; a counterexample of the abstraction is "
        "reported unknown (handshake-safety gives concrete traces)"},
       run_counter,
-      {"exploration::controller_rule", "exploration::environment_handshake_rule", "exploration::all_arrived_rule",
-       "exploration::arrived_rule", "exploration::atan2_fix_rule", "exploration::bearing_error_rule"}}};
+      [] { return handshake::step_quantities(handshake::Variant{}); }}};
 }
 
 }  // namespace swarmcheck::proofs

@@ -2,8 +2,7 @@
 
 #include <fmt/format.h>
 
-#include "spec/exploration/controller.hpp"
-#include "spec/exploration/handshake.hpp"
+#include "proofs/obligations/handshake_system.hpp"
 
 namespace swarmcheck::proofs::handshake {
 namespace {
@@ -20,8 +19,9 @@ z3::expr magnitude(const z3::expr& v) { return z3::ite(v < 0, -v, v); }
 
 }  // namespace
 
-Encoding::Encoding(z3::context& ctx, Variant v, int robots, bool strengthen)
-    : ctx_(ctx), v_(v), n_(robots), strengthen_(strengthen), tr_(ctx, RealTheory::real, false),
+Encoding::Encoding(z3::context& ctx, Variant v, int robots, bool strengthen, Session* session)
+    : ctx_(ctx), v_(v), n_(robots), strengthen_(strengthen),
+      tr_(session ? Translator(*session, RealTheory::real, false) : Translator(ctx, RealTheory::real, false)),
       tol_(tr_(sym::Real::var("tolerance"))), otol_(tr_(sym::Real::var("orient_tolerance"))),
       reo_(tr_(sym::Real::var("reorient"))) {}
 
@@ -76,7 +76,8 @@ const Step& Encoding::step(int t) {
   return it->second;
 }
 
-// Builds step t and the equations of frame t + 1, from the spec's rules.
+// Builds step t and the equations of frame t + 1: spec's master_step, in the variant's order, on
+// a system of the spec's rules whose state is frame t's (handshake_system.hpp).
 Step Encoding::make_step(int t) {
   const Frame cur = frame(t);
   const Frame nxt = frame(t + 1);
@@ -91,83 +92,65 @@ Step Encoding::make_step(int t) {
   params.tolerance_m = sym::Real::var("tolerance");
   params.orient_tolerance_rad = sym::Real::var("orient_tolerance");
   params.reorient_rad = sym::Real::var("reorient");
-  // Controllers read the Environment's outputs of the previous step (both masters).
-  std::vector<z3::expr> new_out, new_ack, new_done;
+  // The robots in the step: free poses; the waypoints the frame's.
+  std::vector<RobotView<S>> robots;
   for (int i = 0; i < n_; ++i) {
     const auto k = static_cast<std::size_t>(i);
-    const sym::Real x = sreal(fmt::format("x_{}", i)), y = sreal(fmt::format("y_{}", i)),
-                    theta = sreal(fmt::format("theta_{}", i)), wx = sreal(fmt::format("wx_{}", i)),
-                    wy = sreal(fmt::format("wy_{}", i));
-    s.x.push_back(tr_(x));
-    s.y.push_back(tr_(y));
-    s.theta.push_back(tr_(theta));
+    robots.push_back({sreal(fmt::format("x_{}", i)), sreal(fmt::format("y_{}", i)), sreal(fmt::format("theta_{}", i)),
+                      sreal(fmt::format("wx_{}", i)), sreal(fmt::format("wy_{}", i))});
+    s.x.push_back(tr_(robots.back().x));
+    s.y.push_back(tr_(robots.back().y));
+    s.theta.push_back(tr_(robots.back().theta));
     s.new_wx.push_back(ctx_.real_const(fmt::format("new_wx_{}@{}", i, t).c_str()));
     s.new_wy.push_back(ctx_.real_const(fmt::format("new_wy_{}@{}", i, t).c_str()));
     // The property's "at its waypoint", over the pose.
     s.at.push_back(magnitude(cur.wx[k] - s.x[k]) + magnitude(cur.wy[k] - s.y[k]) < tol_);
-    if (flag) {
-      const exploration::ControllerCoreT<S> before{sbool(fmt::format("out_{}", i)), sbool(fmt::format("driving_{}", i)),
-                                                   sreal(fmt::format("beta_{}", i)), sym::Real(0.0), sym::Real(0.0),
-                                                   sreal(fmt::format("target_{}", i))};
-      const exploration::ControllerCoreT<S> after = exploration::controller_rule<S>(
-          params, before, {x, y, theta, wx, wy, sbool("env_out"), sym::Real(kHandshakeStep_s)});
-      const z3::expr o = tr_(after.idle), d = tr_(after.driving);
-      new_out.push_back(o);
-      new_ack.push_back(cur.ack[k]);
-      new_done.push_back(cur.done[k]);
-      s.accept.push_back(cur.out[k] && !o);
-      eq = eq && nxt.out[k] == o && nxt.driving[k] == d;
-    } else {
-      const sym::Bool arrived = exploration::arrived_rule<S>({wx - x, wy - y}, params.tolerance_m);
-      const exploration::EpochControllerT<S> after = exploration::epoch_controller_rule<S>(
-          {sint(fmt::format("ack_{}", i)), sbool(fmt::format("done_{}", i))}, sint("epoch"), arrived);
-      new_out.push_back(cur.out[k]);
-      new_ack.push_back(tr_(after.ack));
-      new_done.push_back(tr_(after.done));
-      s.accept.push_back(cur.epoch != cur.ack[k]);
-      eq = eq && nxt.ack[k] == new_ack[k] && nxt.done[k] == new_done[k];
-    }
   }
-  // Ports after the step: a late controller shows the output it had before the step.
-  std::vector<z3::expr> port_out, port_ack, port_done;
-  for (int i = 0; i < n_; ++i) {
-    const auto k = static_cast<std::size_t>(i);
-    port_out.push_back(v_.late_controller ? cur.out[k] : new_out[k]);
-    port_ack.push_back(v_.late_controller ? cur.ack[k] : new_ack[k]);
-    port_done.push_back(v_.late_controller ? cur.done[k] : new_done[k]);
-    if (v_.late_controller)
-      eq = eq && nxt.port_out[k] == port_out[k] && nxt.port_ack[k] == port_ack[k] &&
-           nxt.port_done[k] == port_done[k];
-  }
-  // The Environment reads the ports of the previous step (Jacobi) or the new ones (G-S): the
-  // ports are bound to symbolic names so the rules read them like any input.
-  const bool gs = v_.master == Master::gauss_seidel;
-  const auto& r_out = gs ? port_out : cur.port_out;
-  const auto& r_ack = gs ? port_ack : cur.port_ack;
-  const auto& r_done = gs ? port_done : cur.port_done;
+  const exploration::MasterOrder order =
+      v_.master == Master::jacobi ? exploration::MasterOrder::jacobi : exploration::MasterOrder::gauss_seidel;
   if (flag) {
-    std::vector<sym::Bool> read;
+    SymbolicFlagSystem sys;
+    sys.params = params;
+    sys.env = {sbool("flag"), sbool("env_out")};
+    sys.robots = robots;
+    sys.late = v_.late_controller;
     for (int i = 0; i < n_; ++i) {
-      read.push_back(sbool(fmt::format("read_out_{}", i)));
-      eq = eq && tr_(read.back()) == r_out[static_cast<std::size_t>(i)];
+      sys.internal.push_back({sbool(fmt::format("out_{}", i)), sbool(fmt::format("driving_{}", i)),
+                              sreal(fmt::format("beta_{}", i)), sym::Real(0.0), sym::Real(0.0),
+                              sreal(fmt::format("target_{}", i))});
+      sys.port.push_back(v_.late_controller ? sbool(fmt::format("port_out_{}", i)) : sys.internal.back().idle);
     }
-    const sym::Bool all = exploration::all_arrived_rule<S>(read.size(), [&](std::size_t k) { return read[k]; });
-    const exploration::HandshakeStepT<S> hs =
-        exploration::environment_handshake_rule<S>({sbool("flag"), sbool("env_out")}, all);
-    s.plan = tr_(hs.plan);
-    eq = eq && nxt.flag == tr_(hs.next.flag) && nxt.eout == tr_(hs.next.output);
+    exploration::master_step(exploration::Mode::cosim, sys, order);
+    s.plan = tr_(sys.plan);
+    eq = eq && nxt.flag == tr_(sys.env.flag) && nxt.eout == tr_(sys.env.output);
+    for (int i = 0; i < n_; ++i) {
+      const auto k = static_cast<std::size_t>(i);
+      s.accept.push_back(tr_(sys.accept[k]));
+      eq = eq && nxt.out[k] == tr_(sys.internal[k].idle) && nxt.driving[k] == tr_(sys.internal[k].driving);
+      if (v_.late_controller) eq = eq && nxt.port_out[k] == tr_(sys.port[k]);
+    }
   } else {
-    std::vector<sym::Int> acks;
-    std::vector<sym::Bool> done;
+    SymbolicEpochSystem sys;
+    sys.tolerance = params.tolerance_m;
+    sys.epoch = sint("epoch");
+    sys.robots = robots;
+    sys.late = v_.late_controller;
     for (int i = 0; i < n_; ++i) {
-      acks.push_back(sint(fmt::format("read_ack_{}", i)));
-      done.push_back(sbool(fmt::format("read_done_{}", i)));
-      eq = eq && tr_(acks.back()) == r_ack[static_cast<std::size_t>(i)] &&
-           tr_(done.back()) == r_done[static_cast<std::size_t>(i)];
+      sys.internal.push_back({sint(fmt::format("ack_{}", i)), sbool(fmt::format("done_{}", i))});
+      sys.port.push_back(v_.late_controller
+                             ? exploration::EpochPortT<S>{sint(fmt::format("port_ack_{}", i)), sbool(fmt::format("port_done_{}", i))}
+                             : exploration::EpochPortT<S>{sys.internal.back().ack, sys.internal.back().done});
     }
-    const exploration::EpochStepT<S> es = exploration::epoch_environment_rule<S>(sint("epoch"), acks, done);
-    s.plan = tr_(es.plan);
-    eq = eq && nxt.epoch == tr_(es.epoch);
+    exploration::master_step(exploration::Mode::cosim, sys, order);
+    s.plan = tr_(sys.plan);
+    eq = eq && nxt.epoch == tr_(sys.epoch);
+    for (int i = 0; i < (v_.representative ? 1 : n_); ++i) {
+      const auto k = static_cast<std::size_t>(i);
+      s.accept.push_back(tr_(sys.accept[k]));
+      eq = eq && nxt.ack[k] == tr_(sys.internal[k].ack) && nxt.done[k] == tr_(sys.internal[k].done);
+      if (v_.late_controller)
+        eq = eq && nxt.port_ack[k] == tr_(sys.port[k].ack) && nxt.port_done[k] == tr_(sys.port[k].done);
+    }
   }
   // Waypoints: a plan issues free new ones.
   for (int i = 0; i < n_; ++i) {
@@ -175,9 +158,9 @@ Step Encoding::make_step(int t) {
     eq = eq && nxt.wx[k] == z3::ite(s.plan, s.new_wx[k], cur.wx[k]) &&
          nxt.wy[k] == z3::ite(s.plan, s.new_wy[k], cur.wy[k]);
   }
-  // Ghosts and the two properties.
+  // Ghosts and the two properties (a representative proof: robot 0's; the others are free).
   std::vector<z3::expr> reached_now;
-  for (int i = 0; i < n_; ++i) {
+  for (int i = 0; i < (v_.representative ? 1 : n_); ++i) {
     const auto k = static_cast<std::size_t>(i);
     reached_now.push_back(cur.reached[k] || s.at[k]);
     s.stale_accept = s.stale_accept || (s.accept[k] && !cur.fresh[k]);
@@ -244,7 +227,7 @@ z3::expr Encoding::lemma(int t) {
   }
   const z3::expr prev = z3::ite(f.epoch == 0, ctx_.int_val(exploration::kEpochs - 1), f.epoch - 1);
   r = r && f.epoch >= 0 && f.epoch < exploration::kEpochs;
-  for (std::size_t k = 0; k < f.ack.size(); ++k) {
+  for (std::size_t k = 0; k < (v_.representative ? 1 : f.ack.size()); ++k) {
     r = r && (f.ack[k] == f.epoch || f.ack[k] == prev) &&
         z3::implies(f.ack[k] == prev, f.done[k] && f.fresh[k] && !f.reached[k]) &&
         z3::implies(f.ack[k] == f.epoch, !f.fresh[k] && z3::implies(f.done[k], f.reached[k])) &&

@@ -1,11 +1,12 @@
 #pragma once
-// The handshake of handshake_concrete.hpp as a Z3 transition system, for k-induction. Both
-// sides are the spec's rules interpreted symbolically (spec/exploration/handshake.hpp,
-// controller.hpp): environment_handshake_rule and all_arrived_rule, the whole controller_rule
-// with each robot's pose, heading and waypoint free reals and the tolerances free parameters,
-// and the epoch rules. Robot motion is abstracted: each robot's pose is free in every step, and
-// the Environment issues a free waypoint when it plans. The ghosts and the properties are
-// stated here, over the pose (handshake_concrete.hpp).
+// The handshake of handshake_concrete.hpp as a Z3 transition system, for k-induction. A step is
+// spec's master_step itself (its order of reading the controllers and stepping them: Jacobi or
+// Gauss-Seidel), run on a system of the spec's rules interpreted symbolically
+// (handshake_system.hpp): the whole controller_rule with each robot's pose, heading and waypoint
+// free reals and the tolerances free parameters, the Environment's handshake_stage_rule over
+// all_arrived_rule, or the epoch rules. Robot motion is abstracted: each robot's pose is free in
+// every step, and the Environment issues a free waypoint when it plans. The ghosts and the
+// properties are stated here, over the pose (handshake_concrete.hpp).
 #include <map>
 #include <memory>
 #include <vector>
@@ -37,7 +38,8 @@ class Encoding : public TransitionSystem {
  public:
   // strengthen: conjoin the variant's auxiliary invariant (lemma) to the property, so that
   // k-induction closes at k = 0 or 1 instead of k ~ 2 robots; the lemma is proved with it.
-  Encoding(z3::context& ctx, Variant v, int robots, bool strengthen);
+  // With a session, the spec functions it translates are the obligation's reads.
+  Encoding(z3::context& ctx, Variant v, int robots, bool strengthen, Session* session = nullptr);
   z3::expr init(int frame) override;
   z3::expr trans(int step) override;
   z3::expr good(int step) override;   // the two properties (and the lemma, if strengthened)

@@ -21,7 +21,16 @@ using namespace handshake;
 constexpr int kMaxRobots = 8;
 constexpr int kMaxK = 16;
 constexpr int kBmcRobots = 3;   // counterexamples of these symmetric protocols need few robots
-constexpr int kBmcDepth = 6;
+
+// How deep the bounded check looks before a lemma is tried. The flag handshake has no counter:
+// 6 steps. The epoch handshake's counter wraps every kEpochs epochs, and an epoch takes at least
+// 2 steps (plan; accept, arrive and be read) or 4 with late controllers: two full wraps, so that
+// a wrap-around bug (a stale epoch read as the new one) is refuted from the initial state.
+int bmc_depth(const Variant& v) {
+  if (v.protocol == Protocol::flag) return 6;
+  const int steps_per_epoch = v.late_controller ? 4 : 2;
+  return 2 * exploration::kEpochs * steps_per_epoch + 2;
+}
 
 bool value(const z3::model& m, const z3::expr& e) { return m.eval(e, true).is_true(); }
 
@@ -147,21 +156,23 @@ Outcome refuted(const std::string& name, const Variant& v, Encoding& enc, const 
 
 Outcome run_handshake(Session& session, const std::string& name, Variant v, bool strengthen) {
   std::string ks;
+  // A real run that breaks the property, if any, for every robot count first: a lemma that fails
+  // for 1 robot must not hide a run of 2 that the bounded check would have found.
+  for (int n = 1; strengthen && n <= kBmcRobots; ++n) {
+    Encoding plain(session.ctx(), v, n, false, &session);
+    const KInductionResult b = bounded_check(session, plain, bmc_depth(v), fmt::format("n{}", n));
+    if (b.verdict == Verdict::refuted) return refuted(name, v, plain, b, n);
+    if (b.verdict == Verdict::unknown && session.queries().back().answer != "unsat")
+      return {Verdict::unknown, fmt::format("z3 gave up on the bounded check ({} robot(s))", n), {}};
+  }
   for (int n = 1; n <= kMaxRobots; ++n) {
-    if (strengthen && n <= kBmcRobots) {   // a real run that breaks the property, if any
-      Encoding plain(session.ctx(), v, n, false);
-      const KInductionResult b = bounded_check(session, plain, kBmcDepth, fmt::format("n{}", n));
-      if (b.verdict == Verdict::refuted) return refuted(name, v, plain, b, n);
-      if (b.verdict == Verdict::unknown && session.queries().back().answer != "unsat")
-        return {Verdict::unknown, fmt::format("z3 gave up on the bounded check ({} robot(s))", n), {}};
-    }
-    Encoding enc(session.ctx(), v, n, strengthen);
+    Encoding enc(session.ctx(), v, n, strengthen, &session);
     const KInductionResult r = k_induction(session, enc, kMaxK, fmt::format("n{}", n));
     if (r.verdict == Verdict::refuted && value(*r.model, enc.property(r.depth - 1)))
       return {Verdict::unknown,
               fmt::format("the strengthening lemma is not invariant ({} robot(s), step {}), and no run of up to "
                           "{} steps from the initial state breaks the property",
-                          n, r.depth - 1, kBmcDepth),
+                          n, r.depth - 1, bmc_depth(v)),
               {}};
     if (r.verdict == Verdict::refuted) return refuted(name, v, enc, r, n);
     if (r.verdict == Verdict::unknown)
@@ -177,29 +188,25 @@ Obligation make(std::string name, std::string property, Verdict expected, Varian
   std::vector<std::string> a = {
       "robot motion abstracted: each robot's pose (x, y, heading) is free in every step, and a plan "
       "issues each robot a free waypoint; the tolerances are free positive parameters",
-      "both sides are the spec's rules interpreted over the reals: environment_handshake_rule and "
-      "all_arrived_rule, the whole controller_rule (arrival, maneuver switch, atan2 fix), or the "
-      "epoch rules; atan2 and the angle wrap are uninterpreted with their ranges",
+      "a step is spec's master_step (its order of reading the controllers and stepping them) on the "
+      "spec's rules interpreted over the reals: handshake_stage_rule (environment_handshake_rule) over "
+      "all_arrived_rule, the whole controller_rule (arrival, maneuver switch, atan2 fix), or the epoch "
+      "rules; atan2 and the angle wrap are uninterpreted with their ranges",
       "no-early-plan is stated over the pose: a robot has reached its waypoint when |x - xDesired| + "
       "|y - yDesired| < tolerance held in some step since the waypoint was issued",
       fmt::format("1..8 robots; k-induction with the simple-path constraint, k <= 16; first bounded model "
-                  "checking from the initial state, {} steps, 1..{} robots", kBmcDepth, kBmcRobots),
+                  "checking from the initial state, {} steps, 1..{} robots", bmc_depth(v), kBmcRobots),
       strengthen ? "strengthened by a hand-derived invariant of the reachable states (handshake_encoding.cpp, "
                    "Encoding::lemma), proved together with the property"
                  : "no strengthening lemma: a counterexample is a real run from the initial state",
-      "a counterexample counts only when replaying its poses through the executed code (controller_step, "
-      "all_arrived_rule, the Environment's rule) breaks the same property on the same step"};
+      "a counterexample counts only when replaying its poses through the executed code (master_step over "
+      "controller_step, all_arrived_rule and handshake_stage, or the epoch rules) breaks the same property on "
+      "the same step"};
   for (std::string& e : extra) a.push_back(std::move(e));
-  std::vector<std::string> reads =
-      v.protocol == Protocol::flag
-          ? std::vector<std::string>{"exploration::environment_handshake_rule", "exploration::all_arrived_rule",
-                                     "exploration::controller_rule", "exploration::arrived_rule",
-                                     "exploration::atan2_fix_rule", "exploration::bearing_error_rule"}
-          : std::vector<std::string>{"exploration::epoch_environment_rule", "exploration::epoch_controller_rule",
-                                     "exploration::arrived_rule"};
   std::string n = name;
   return Obligation{std::move(name), std::move(property), expected, std::move(a),
-                    [n, v, strengthen](Session& s) { return run_handshake(s, n, v, strengthen); }, std::move(reads)};
+                    [n, v, strengthen](Session& s) { return run_handshake(s, n, v, strengthen); },
+                    [v] { return handshake::step_quantities(v); }};
 }
 
 }  // namespace

@@ -51,9 +51,26 @@ KInductionResult k_induction(Session& session, TransitionSystem& ts, int max_k,
 }
 
 KInductionResult bounded_check(Session& session, TransitionSystem& ts, int max_depth, const std::string& label) {
+  // One query: some step within max_depth from the initial state is bad. The counterexample is
+  // cut at its first bad step.
   KInductionResult out;
-  for (int k = 0; k < max_depth; ++k)
-    if (base_case(session, ts, k, fmt::format("{}-bmc-d{}", label, k + 1), out) != z3::unsat) return out;
+  z3::solver s = session.make_solver();
+  s.add(ts.init(0));
+  z3::expr some_bad = s.ctx().bool_val(false);
+  for (int t = 0; t < max_depth; ++t) {
+    s.add(ts.trans(t));
+    some_bad = some_bad || !ts.good(t);
+  }
+  s.add(some_bad);
+  if (session.check(s, fmt::format("{}-bmc-d{}", label, max_depth)) != z3::sat) return out;
+  const z3::model m = s.get_model();
+  for (int t = 0; t < max_depth; ++t)
+    if (!m.eval(ts.good(t), true).is_true()) {
+      out.verdict = Verdict::refuted;
+      out.depth = t + 1;
+      out.model = m;
+      return out;
+    }
   return out;
 }
 

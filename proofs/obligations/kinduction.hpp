@@ -34,8 +34,9 @@ struct KInductionResult {
 KInductionResult k_induction(Session& session, TransitionSystem& ts, int max_k,
                              const std::string& label);
 
-// Bounded model checking alone: the base cases of depth 1..max_depth. refuted with the
-// counterexample, or unknown when none is found (nothing is proved).
+// Bounded model checking alone, one query: a bad step within max_depth steps of the initial
+// state. refuted with the counterexample (cut at its first bad step), or unknown when none is
+// found (nothing is proved; the query's answer says whether none exists).
 KInductionResult bounded_check(Session& session, TransitionSystem& ts, int max_depth, const std::string& label);
 
 }  // namespace swarmcheck::proofs

@@ -22,8 +22,8 @@ Verdict verdict_from_string(const std::string& s) {
 const std::vector<Obligation>& all_obligations() {
   static const std::vector<Obligation> all = [] {
     std::vector<Obligation> v;
-    for (auto part : {servo_obligations, atan2_obligations, handshake_obligations,
-                      handshake_counter_obligations, pheromone_obligations, occupancy_obligations,
+    for (auto part : {servo_obligations, atan2_obligations, handshake_obligations, handshake_counter_obligations,
+                      handshake_any_robots_obligations, pheromone_obligations, occupancy_obligations,
                       orientation_obligations})
       for (Obligation& o : part()) v.push_back(std::move(o));
     return v;

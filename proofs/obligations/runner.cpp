@@ -6,6 +6,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <chrono>
 #include <nlohmann/json.hpp>
@@ -21,8 +22,9 @@ using Clock = std::chrono::steady_clock;
 Json to_json(const ObligationReport& r) {
   Json queries = Json::array();
   for (const QueryRecord& q : r.queries)
-    queries.push_back({{"label", q.label}, {"smt2", q.smt2}, {"answer", q.answer}});
-  Json j = {{"result", to_string(r.result)}, {"detail", r.detail}, {"queries", queries}};
+    queries.push_back({{"label", q.label}, {"smt2", q.smt2}, {"answer", q.answer}, {"seconds", q.seconds}});
+  Json j = {{"result", to_string(r.result)}, {"detail", r.detail}, {"queries", queries},
+            {"reads", r.reads}, {"step_calls", r.step_calls}};
   if (r.trace) j["trace"] = {{"file_name", r.trace->file_name}, {"text", r.trace->text}};
   return j;
 }
@@ -32,7 +34,10 @@ void from_json(const Json& j, ObligationReport& r) {
   r.detail = j.at("detail").get<std::string>();
   for (const Json& q : j.at("queries"))
     r.queries.push_back(QueryRecord{q.at("label").get<std::string>(), q.at("smt2").get<std::string>(),
-                                    q.at("answer").get<std::string>()});
+                                    q.at("answer").get<std::string>(), q.at("seconds").get<double>()});
+  r.reads = j.at("reads").get<std::vector<std::string>>();
+  r.step_calls = j.at("step_calls").get<std::vector<std::string>>();
+  r.unread = unread_step_calls(r.step_calls, r.reads);
   if (j.contains("trace"))
     r.trace = TraceFile{j["trace"].at("file_name").get<std::string>(),
                         j["trace"].at("text").get<std::string>()};
@@ -44,7 +49,6 @@ ObligationReport skeleton(const Obligation& o) {
   r.property = o.property;
   r.expected = o.expected;
   r.assumptions = o.assumptions;
-  r.reads = o.reads;
   return r;
 }
 
@@ -64,6 +68,14 @@ void run_body(const Obligation& o, unsigned query_timeout_ms, ObligationReport& 
     r.detail = std::string("error: ") + e.what();
   }
   r.queries = session.queries();
+  r.reads.assign(session.reads().begin(), session.reads().end());
+  try {
+    if (o.step) r.step_calls = sym::called_functions(o.step());
+  } catch (const std::exception& e) {
+    r.result = Verdict::unknown;
+    r.detail += std::string("; the step's symbolic interpretation failed: ") + e.what();
+  }
+  r.unread = unread_step_calls(r.step_calls, r.reads);
 }
 
 void write_all(int fd, const std::string& text) {
@@ -77,6 +89,14 @@ void write_all(int fd, const std::string& text) {
 }
 
 }  // namespace
+
+std::vector<std::string> unread_step_calls(const std::vector<std::string>& step_calls,
+                                           const std::vector<std::string>& reads) {
+  std::vector<std::string> out;
+  for (const std::string& f : step_calls)
+    if (std::find(reads.begin(), reads.end(), f) == reads.end()) out.push_back(f);
+  return out;
+}
 
 const Obligation* find_obligation(const std::string& name) {
   for (const Obligation& o : all_obligations())

@@ -26,6 +26,10 @@ bool uninterpreted(Op op, RealTheory t) {
 Translator::Translator(z3::context& ctx, RealTheory theory, bool consistency, unsigned int_bits)
     : ctx_(ctx), theory_(theory), consistency_(consistency), int_bits_(int_bits) {}
 
+Translator::Translator(Session& session, RealTheory theory, bool consistency, unsigned int_bits)
+    : ctx_(session.ctx()), session_reads_(&session.reads()), theory_(theory), consistency_(consistency),
+      int_bits_(int_bits) {}
+
 z3::expr Translator::variable(const std::string& name, Sort sort) {
   switch (sort) {
     case Sort::boolean: return ctx_.bool_const(name.c_str());
@@ -155,16 +159,32 @@ z3::expr Translator::node(const sym::NodePtr& root) {
     auto [np, expanded] = stack.back();
     const sym::Node& n = **np;
     if (memo_.count(&n)) { stack.pop_back(); continue; }
+    const bool abstracted_call = n.op == Op::call && abstract_calls_.count(n.name);
     if (!expanded) {
       stack.back().second = true;
-      for (const sym::NodePtr& a : n.args)
-        if (!memo_.count(a.get())) stack.push_back({&a, false});
+      if (!abstracted_call)
+        for (const sym::NodePtr& a : n.args)
+          if (!memo_.count(a.get())) stack.push_back({&a, false});
       continue;
     }
     stack.pop_back();
     std::vector<z3::expr> args;
-    for (const sym::NodePtr& a : n.args) args.push_back(memo_.at(a.get()));
+    if (!abstracted_call)
+      for (const sym::NodePtr& a : n.args) args.push_back(memo_.at(a.get()));
     z3::expr e(ctx_);
+    if (abstracted_call) {
+      reads_.insert(n.name);
+      if (session_reads_) session_reads_->insert(n.name);
+      const std::string name = fmt::format("{}!{}", n.name, fresh_++);
+      e = n.sort == Sort::boolean ? ctx_.bool_const(name.c_str())
+          : n.sort == Sort::integer
+              ? (int_bits_ > 0 ? ctx_.bv_const(name.c_str(), int_bits_) : ctx_.int_const(name.c_str()))
+              : (theory_ == RealTheory::fp64 ? ctx_.fpa_const<64>(name.c_str()) : ctx_.real_const(name.c_str()));
+      facts_.push_back(abstract_calls_.at(n.name)(e));
+      memo_.emplace(&n, e);
+      keep_.push_back(*np);
+      continue;
+    }
     switch (n.op) {
       case Op::literal:
         if (n.sort == Sort::real) e = real_literal(n.real);
@@ -173,6 +193,23 @@ z3::expr Translator::node(const sym::NodePtr& root) {
         else e = ctx_.int_val(static_cast<int64_t>(n.integer));
         break;
       case Op::variable: e = variable(n.name, n.sort); break;
+      case Op::call:
+        e = args[0];
+        reads_.insert(n.name);
+        if (session_reads_) session_reads_->insert(n.name);
+        break;
+      case Op::function: {
+        z3::sort_vector domain(ctx_);
+        for (const z3::expr& a : args) domain.push_back(a.get_sort());
+        z3::sort range = n.sort == Sort::boolean ? ctx_.bool_sort()
+                         : n.sort == Sort::integer
+                             ? (int_bits_ > 0 ? ctx_.bv_sort(int_bits_) : ctx_.int_sort())
+                             : (theory_ == RealTheory::fp64 ? ctx_.fpa_sort<64>() : ctx_.real_sort());
+        z3::expr_vector actual(ctx_);
+        for (const z3::expr& a : args) actual.push_back(a);
+        e = ctx_.function(n.name.c_str(), domain, range)(actual);
+        break;
+      }
       case Op::draw: {
         const std::string name = fmt::format("draw!{}!{}", n.name, fresh_++);
         e = int_bits_ > 0 ? ctx_.bv_const(name.c_str(), int_bits_) : ctx_.int_const(name.c_str());
@@ -180,7 +217,12 @@ z3::expr Translator::node(const sym::NodePtr& root) {
         break;
       }
       default:
-        e = uninterpreted(n.op, theory_) ? apply(n.op, args) : arith(n, args);
+        if (abstract_ && n.sort == Sort::real && n.op != Op::select && n.op != Op::call) {
+          const std::string name = fmt::format("abstract!{}!{}", sym::to_string(n.op), fresh_++);
+          e = theory_ == RealTheory::fp64 ? ctx_.fpa_const<64>(name.c_str()) : ctx_.real_const(name.c_str());
+        } else {
+          e = uninterpreted(n.op, theory_) ? apply(n.op, args) : arith(n, args);
+        }
     }
     memo_.emplace(&n, e);
     keep_.push_back(*np);

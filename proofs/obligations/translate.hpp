@@ -12,12 +12,16 @@
 // uninterpreted, Ackermannized: one constant per application with the facts this file states
 // (ranges, signs, quadrants of atan2), and functional consistency between applications. Those
 // facts are returned by side_conditions(), to be asserted with the query. A random draw is a
-// free integer in its range.
+// free integer in its range. A call node (num::traced) is the identity; its name is recorded as a
+// spec function the translated expressions read. A sym function node is a Z3 function of that name.
+#include <functional>
+#include <set>
 #include <string>
 #include <unordered_map>
 #include <utility>
 #include <vector>
 
+#include "proofs/obligations/session.hpp"
 #include "proofs/obligations/z3.hpp"
 #include "spec/util/sym.hpp"
 
@@ -34,6 +38,9 @@ class Translator {
   // and draws of a window: decided by bit-blasting, far cheaper than integer arithmetic over
   // nested selects); 0 as mathematical integers.
   Translator(z3::context& ctx, RealTheory theory, bool consistency = true, unsigned int_bits = 0);
+  // The same in an obligation's session: the spec functions it translates are the obligation's
+  // `reads` (Session::reads).
+  Translator(Session& session, RealTheory theory, bool consistency = true, unsigned int_bits = 0);
 
   z3::expr operator()(const sym::Real& x) { return node(x.node()); }
   z3::expr operator()(const sym::Bool& x) { return node(x.node()); }
@@ -48,7 +55,24 @@ class Translator {
   // The facts added since the last call (for a transition system: the facts of one step).
   z3::expr take_new_facts();
 
+  // Abstracts every real-valued operation (arithmetic, sqrt, the uninterpreted functions) to a
+  // fresh value of its sort: an over-approximation, for a property that must hold whatever those
+  // values are (a saturation's range). Selects, comparisons and NaN tests stay exact. A model of
+  // an abstracted query need not be a run: its counterexamples are for re-asking exactly.
+  void abstract_real_arithmetic(bool on) { abstract_ = on; }
+
+  // Translates every call node named fn (a spec function's result, num::traced) as a fresh value
+  // of its sort constrained by contract(fresh), without looking inside: for a function whose
+  // contract the same obligation proves by other queries (compositional reasoning). The function
+  // still counts as read.
+  void abstract_call(const std::string& fn, std::function<z3::expr(const z3::expr&)> contract) {
+    abstract_calls_[fn] = std::move(contract);
+  }
+
   RealTheory theory() const { return theory_; }
+  unsigned int_bits() const { return int_bits_; }
+  // The spec functions (call nodes) translated so far.
+  const std::set<std::string>& reads() const { return reads_; }
   z3::context& ctx() { return ctx_; }
 
  private:
@@ -62,9 +86,13 @@ class Translator {
   z3::expr arith(const sym::Node& n, const std::vector<z3::expr>& a);
 
   z3::context& ctx_;
+  std::set<std::string>* session_reads_ = nullptr;
+  std::set<std::string> reads_;
   RealTheory theory_;
   bool consistency_;
   unsigned int_bits_;
+  bool abstract_ = false;
+  std::unordered_map<std::string, std::function<z3::expr(const z3::expr&)>> abstract_calls_;
   std::size_t taken_ = 0;
   std::unordered_map<const sym::Node*, z3::expr> memo_;
   std::vector<sym::NodePtr> keep_;   // keeps memoised nodes alive (their addresses are keys)

@@ -22,6 +22,23 @@ sym::Bool blocked_at(std::span<const SymbolicCandidate> c, const sym::Int& k) {
   return b;
 }
 
+// The cell of the candidate at a (possibly symbolic) index; the symbolic one is (0, 0) at an
+// index that names none.
+CellIndex cell_at(std::span<const Candidate> c, int32_t k) { return c[static_cast<std::size_t>(k)].cell; }
+CellOf<num::Symbolic> cell_at(std::span<const SymbolicCandidate> c, const sym::Int& k) {
+  CellOf<num::Symbolic> out{sym::Int(0), sym::Int(0)};
+  for (std::size_t i = 0; i < c.size(); ++i) {
+    const sym::Bool here = k == static_cast<int32_t>(i);
+    out = {sym::select(here, c[i].cell[0], out[0]), sym::select(here, c[i].cell[1], out[1])};
+  }
+  return out;
+}
+
+template <class D>
+CellOf<D> select_cell(const typename D::Bool& c, const CellOf<D>& a, const CellOf<D>& b) {
+  return {num::select(c, a[0], b[0]), num::select(c, a[1], b[1])};
+}
+
 // Whether a candidate is in the list (always, for a concrete one).
 constexpr bool present(const Candidate&) { return true; }
 const sym::Bool& present(const SymbolicCandidate& c) { return c.present; }
@@ -171,23 +188,57 @@ void choose_into(const RuleDescriptor& rules, const ChoiceTerms& terms, std::spa
   out = choose_rule<num::Concrete>(rules, terms, c, site);
 }
 
-RobotDecision decide(const RuleDescriptor& rules, CellIndex current, std::span<const Candidate> c,
-                     const Choice& ch) {
-  RobotDecision d;
-  d.deposit_centre = current;
-  if (ch.best < 0) return d;   // no candidate at all (a 1 x 1 map): stay
-  const CellIndex best = c[static_cast<std::size_t>(ch.best)].cell;
-  if (ch.target >= 0) {
-    d.moves = true;
-    d.to = c[static_cast<std::size_t>(ch.target)].cell;
-    d.occupies = !ch.fallback || rules.fallback_effect == FallbackEffect::occupy_and_mark;
-    d.marks = d.occupies;
-    d.mark = d.to;
-  }
-  // A blocked best and no free candidate: the robot stays and marks nothing, in every rule set
-  // (the thesis's published code; its document's listing marks the best, SPEC.md section 11).
-  d.deposit_centre = rules.deposit_centre == DepositCentre::best ? best : (d.moves ? d.to : current);
-  return d;
+template <class D>
+RobotDecisionT<D> decide_rule(const RuleDescriptor& rules, const CellOf<D>& current,
+                              std::span<const CandidateOf<D>> c, const ChoiceT<D>& ch) {
+  using Bool = typename D::Bool;
+  RobotDecisionT<D> stay;
+  stay.deposit_centre = current;
+  const auto chosen = [&] {
+    const CellOf<D> best = cell_at(c, ch.best);
+    const auto moved = [&] {
+      RobotDecisionT<D> m = stay;
+      m.moves = Bool(true);
+      m.to = cell_at(c, ch.target);
+      m.occupies = !ch.fallback || Bool(rules.fallback_effect == FallbackEffect::occupy_and_mark);
+      m.marks = m.occupies;
+      m.mark = m.to;
+      return m;
+    };
+    RobotDecisionT<D> d = num::branch(ch.target >= 0, moved, [&] { return stay; });
+    // A blocked best and no free candidate: the robot stays and marks nothing, in every rule set
+    // (the thesis's published code; its document's listing marks the best, SPEC.md section 11).
+    d.deposit_centre = rules.deposit_centre == DepositCentre::best ? best : select_cell<D>(d.moves, d.to, current);
+    return d;
+  };
+  // No candidate at all (a 1 x 1 map): stay.
+  RobotDecisionT<D> d = num::branch(ch.best < 0, [&] { return stay; }, chosen);
+  constexpr const char* fn = "exploration::decide";
+  auto cell = [&](const CellOf<D>& x) { return CellOf<D>{num::traced(fn, x[0]), num::traced(fn, x[1])}; };
+  return {num::traced(fn, d.moves), cell(d.to),          num::traced(fn, d.occupies),
+          num::traced(fn, d.marks), cell(d.mark), cell(d.deposit_centre)};
+}
+
+template RobotDecisionT<num::Concrete> decide_rule<num::Concrete>(const RuleDescriptor&, const CellIndex&,
+                                                                  std::span<const Candidate>, const Choice&);
+template RobotDecisionT<num::Symbolic> decide_rule<num::Symbolic>(const RuleDescriptor&, const CellOf<num::Symbolic>&,
+                                                                  std::span<const SymbolicCandidate>,
+                                                                  const ChoiceT<num::Symbolic>&);
+
+RobotDecision decide(const RuleDescriptor& rules, CellIndex current, std::span<const Candidate> c, const Choice& ch) {
+  return decide_rule<num::Concrete>(rules, current, c, ch);
+}
+
+RobotDecisionT<num::Symbolic> decide(const RuleDescriptor& rules, const CellOf<num::Symbolic>& current,
+                                     std::span<const SymbolicCandidate> c, const ChoiceT<num::Symbolic>& ch) {
+  return decide_rule<num::Symbolic>(rules, current, c, ch);
+}
+
+ChoiceT<num::Symbolic> choose(const RuleDescriptor& rules, const ChoiceTermsT<num::Symbolic>& terms,
+                              std::span<const SymbolicCandidate> c, const SymbolicDrawSite& site) {
+  const ChoiceT<num::Symbolic> ch = choose_rule<num::Symbolic>(rules, terms, c, site);
+  constexpr const char* fn = "exploration::choose_rule";
+  return {num::traced(fn, ch.best), num::traced(fn, ch.target), num::traced(fn, ch.fallback)};
 }
 
 std::optional<RobotDecision> walled_in_decision(const RuleDescriptor& rules, CellIndex current) {

@@ -22,7 +22,9 @@
 #include <span>
 #include <string>
 #include <type_traits>
+#include <utility>
 
+#include "spec/exploration/neighbourhood.hpp"
 #include "spec/exploration/rule_set.hpp"
 #include "spec/exploration/types.hpp"
 #include "spec/util/num.hpp"
@@ -41,9 +43,10 @@ struct Candidate {
 // A symbolic candidate may be absent (a window cell outside a symbolic map): the rules skip
 // it. A concrete candidate list holds only present cells.
 struct SymbolicCandidate {
+  CellOf<num::Symbolic> cell;
   sym::Real tau;
   sym::Bool blocked;
-  sym::Bool present;
+  sym::Bool present = true;
 };
 
 template <class D>
@@ -95,6 +98,19 @@ template <class D>
 ChoiceT<D> choose_rule(const RuleDescriptor& rules, const ChoiceTermsT<D>& terms,
                        std::span<const CandidateOf<D>> candidates, const DrawSiteOf<D>& site);
 
+// The symbolic choice (choose_rule in the symbolic domain, its fields traced as choose_rule's).
+ChoiceT<num::Symbolic> choose(const RuleDescriptor& rules, const ChoiceTermsT<num::Symbolic>& terms,
+                              std::span<const SymbolicCandidate> candidates, const SymbolicDrawSite& site);
+
+// The draw site of robot r's decision at tick `tick` (a symbolic one is named after both).
+template <class D>
+DrawSiteOf<D> draw_site(uint64_t seed, int64_t tick, int32_t robot) {
+  if constexpr (num::is_concrete<D>)
+    return DrawSite{seed, tick, robot};
+  else
+    return SymbolicDrawSite{"robot" + std::to_string(robot) + "@" + std::to_string(tick)};
+}
+
 // The concrete choice, written into `out`. (Returned by value from another translation unit, a
 // Choice was assembled on the stack by GCC 12 and loaded back as one 8-byte word from two 4-byte
 // stores, a store-forwarding stall that was a third of the choice's time in a profile; choose()
@@ -109,17 +125,39 @@ inline Choice choose(const RuleDescriptor& rules, const ChoiceTerms& terms, std:
 }
 
 // What one robot's decision does to the map, from its choice and the rule set's effects.
-struct RobotDecision {
-  bool moves = false;       // the robot's cell becomes `to` (waypoint: its centre); the old cell is released
-  CellIndex to{};
-  bool occupies = false;    // `to` becomes occupied by the robot
-  bool marks = false;       // `mark` is marked visited (counted if it was not)
-  CellIndex mark{};
-  CellIndex deposit_centre{};
+template <class D>
+struct RobotDecisionT {
+  typename D::Bool moves = false;      // the robot's cell becomes `to` (waypoint: its centre); the old cell is released
+  CellOf<D> to{};
+  typename D::Bool occupies = false;   // `to` becomes occupied by the robot
+  typename D::Bool marks = false;      // `mark` is marked visited (counted if it was not)
+  CellOf<D> mark{};
+  CellOf<D> deposit_centre{};
 };
+using RobotDecision = RobotDecisionT<num::Concrete>;
+
+// The decision of a robot in `current` from its candidates and its choice (decide.cpp
+// instantiates it for both domains).
+template <class D>
+RobotDecisionT<D> decide_rule(const RuleDescriptor& rules, const CellOf<D>& current,
+                              std::span<const CandidateOf<D>> candidates, const ChoiceT<D>& choice);
 
 RobotDecision decide(const RuleDescriptor& rules, CellIndex current, std::span<const Candidate> candidates,
                      const Choice& choice);
+RobotDecisionT<num::Symbolic> decide(const RuleDescriptor& rules, const CellOf<num::Symbolic>& current,
+                                     std::span<const SymbolicCandidate> candidates, const ChoiceT<num::Symbolic>& choice);
+
+inline RobotDecisionT<num::Symbolic> merge(const sym::Bool& c, const RobotDecisionT<num::Symbolic>& a,
+                                           const RobotDecisionT<num::Symbolic>& b) {
+  auto cell = [&](const CellOf<num::Symbolic>& x, const CellOf<num::Symbolic>& y) {
+    return CellOf<num::Symbolic>{sym::select(c, x[0], y[0]), sym::select(c, x[1], y[1])};
+  };
+  return {sym::select(c, a.moves, b.moves), cell(a.to, b.to),     sym::select(c, a.occupies, b.occupies),
+          sym::select(c, a.marks, b.marks), cell(a.mark, b.mark), cell(a.deposit_centre, b.deposit_centre)};
+}
+inline ChoiceT<num::Symbolic> merge(const sym::Bool& c, const ChoiceT<num::Symbolic>& a, const ChoiceT<num::Symbolic>& b) {
+  return {sym::select(c, a.best, b.best), sym::select(c, a.target, b.target), sym::select(c, a.fallback, b.fallback)};
+}
 
 // The decision of a robot in `current` none of whose candidates is free (every window cell
 // blocked, or none in the map), for rule sets whose decision then depends on nothing else:

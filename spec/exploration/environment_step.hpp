@@ -29,6 +29,7 @@
 #include <cstdint>
 #include <optional>
 #include <span>
+#include <type_traits>
 #include <vector>
 
 #include "spec/exploration/choice.hpp"
@@ -57,6 +58,7 @@ concept EnvironmentGrid = requires(G& g, const G& cg, CellIndex c, int64_t tick,
 
 // Constant for a run: the scenario and what is derived from it once.
 struct EnvironmentConfig {
+  using Domain = num::Concrete;  // the generic stages below read their domain from the config
   Scenario scenario;
   const RuleDescriptor* rules;   // the row of scenario.rule
   ChoiceTerms terms;
@@ -88,97 +90,127 @@ struct EnvironmentState {
   Progress progress;
 };
 
-// A grid that gathers a window itself (impl's LazyGrid, row by row) must give exactly the list
-// below; the conformance harness holds it to that.
-template <class G, class Alloc>
-concept GathersWindows = requires(const G& g, const EnvironmentConfig& cfg, CellIndex c, int64_t tick,
-                                  std::vector<Candidate, Alloc>& out) { g.gather_window(cfg, c, tick, out); };
+// ---- The stages, written once over the config's domain (Cfg::Domain, spec/util/num.hpp).
+// model/ and impl/ run them on EnvironmentConfig, EnvironmentState and their grids; proofs/
+// interprets the same templates on symbolic ones (a symbolic map, symbolic robot cells), so that
+// an obligation about the step reads these functions, not a restatement of them. A condition on
+// a symbolic value is a num::when or num::branch; an effect on the grid under such a condition
+// runs on a copy that is merged back (a symbolic grid is a list of guarded writes).
+
+// How many cells a stage newly marked visited.
+template <class D>
+using CountOf = std::conditional_t<num::is_concrete<D>, int64_t, sym::Int>;
+
+// A window cell's candidate: a concrete one is in the window by construction; a symbolic one is
+// present when its cell is in the window (and marked as gathered here).
+inline void gathered(Candidate&, bool) {}
+inline void gathered(SymbolicCandidate& c, const sym::Bool& in_window) {
+  constexpr const char* fn = "exploration::gather_candidates";
+  c.present = num::traced(fn, c.present && in_window);
+  c.tau = num::traced(fn, c.tau);
+  c.blocked = num::traced(fn, c.blocked);
+}
 
 // The candidates of a robot in c: its window without c, raster order, pheromone at tick. (Any
-// allocator: impl's per-thread buffers keep to their own cache lines.)
-template <EnvironmentGrid G, class Alloc>
-void gather_candidates(const EnvironmentConfig& cfg, const G& grid, CellIndex c, int64_t tick,
-                       std::vector<Candidate, Alloc>& out) {
-  if constexpr (GathersWindows<G, Alloc>) {
+// allocator: impl's per-thread buffers keep to their own cache lines.) A grid that gathers a
+// window itself (impl's LazyGrid, row by row, `gather_window`) must give exactly this list; the
+// conformance harness holds it to that.
+template <class Cfg, class G, class Cell, class Vec>
+void gather_candidates(const Cfg& cfg, const G& grid, const Cell& c, int64_t tick, Vec& out) {
+  if constexpr (requires { grid.gather_window(cfg, c, tick, out); }) {
     grid.gather_window(cfg, c, tick, out);
     return;
   }
   out.clear();
-  const Window w = window_around(c, cfg.scenario.params.s_range, cfg.scenario.map_size);
-  for (int32_t i = w.i_lo; i <= w.i_hi; ++i)
-    for (int32_t j = w.j_lo; j <= w.j_hi; ++j)
-      if (i != c[0] || j != c[1]) out.push_back(grid.candidate(CellIndex{i, j}, tick));
+  const int32_t s_range = cfg.scenario.params.s_range;
+  const auto w = window_around(c, s_range, cfg.scenario.map_size);
+  for_each_window_cell(w, c, s_range, [&](const auto& cell, const auto& in_window, int32_t di, int32_t dj) {
+    if (di == 0 && dj == 0) return;   // the robot's own cell
+    auto candidate = grid.candidate(cell, tick);
+    gathered(candidate, in_window);
+    out.push_back(candidate);
+  });
 }
 
 // A decision's effect on the grid (the old cell released, the new one occupied, a cell marked
 // visited); returns how many cells it newly marked visited (0 or 1). `from` is the robot's cell.
-template <EnvironmentGrid G>
-int64_t apply_decision_to_grid(G& grid, CellIndex from, int32_t r, const RobotDecision& d) {
-  if (d.moves) {
-    grid.release(from);
-    if (d.occupies) grid.occupy(d.to, r);
-  }
-  return d.marks && grid.mark_visited(d.mark) ? 1 : 0;
+template <class G, class Cell, class Decision>
+auto apply_decision_to_grid(G& grid, const Cell& from, int32_t r, const Decision& d) {
+  using Count = std::conditional_t<std::is_same_v<std::decay_t<decltype(d.moves)>, bool>, int64_t, sym::Int>;
+  constexpr const char* fn = "exploration::apply_decision_to_grid";
+  num::when(num::traced(fn, d.moves), grid, [&](G& g) {
+    g.release(from);
+    num::when(num::traced(fn, d.occupies), g, [&](G& occupied) { occupied.occupy(d.to, r); });
+  });
+  return num::when_else(
+      num::traced(fn, d.marks), grid,
+      [&](G& g) { return num::select(g.mark_visited(d.mark), Count(1), Count(0)); }, Count(0));
 }
 
 // A decision's effect on the robot's record: its cell, waypoint and deposit centre. Nothing
 // another robot's decision reads (they read the grid), so it may wait until the stage's end.
-inline void apply_decision_to_robot(const EnvironmentConfig& cfg, EnvironmentState& env, int32_t r,
-                                    const RobotDecision& d) {
-  if (d.moves) {
-    EnvRobot& robot = env.robots[static_cast<std::size_t>(r)];
+template <class Cfg, class Env, class Decision>
+void apply_decision_to_robot(const Cfg& cfg, Env& env, int32_t r, const Decision& d) {
+  using D = typename Cfg::Domain;
+  num::when(num::traced("exploration::apply_decision_to_robot", d.moves), env.robots[static_cast<std::size_t>(r)],
+            [&](auto& robot) {
     robot.cell = d.to;
-    robot.waypoint = centre_of(d.to, cfg.scenario.cell_size);
-  }
+    robot.waypoint = centre_of_rule<D>(d.to, cfg.scenario.cell_size);
+  });
   env.deposit_centre[static_cast<std::size_t>(r)] = d.deposit_centre;
 }
 
 // One robot's decision on the grid: gather, choose, decide, and the decision's grid effects.
 // `newly` counts the cells it newly marked visited. `scratch` is reused storage.
-template <EnvironmentGrid G, class Alloc>
-RobotDecision decide_on_grid(const EnvironmentConfig& cfg, const EnvironmentState& env, G& grid, int32_t r,
-                             std::vector<Candidate, Alloc>& scratch, int64_t& newly) {
-  const CellIndex current = env.robots[static_cast<std::size_t>(r)].cell;
+template <class Cfg, class Env, class G, class Vec, class Count>
+auto decide_on_grid(const Cfg& cfg, const Env& env, G& grid, int32_t r, Vec& scratch, Count& newly) {
+  using D = typename Cfg::Domain;
+  if constexpr (num::is_concrete<D>) static_assert(EnvironmentGrid<G>);
+  const auto current = env.robots[static_cast<std::size_t>(r)].cell;
   gather_candidates(cfg, grid, current, env.tick, scratch);
-  const Choice ch = choose(*cfg.rules, cfg.terms, scratch, DrawSite{cfg.scenario.seed, env.tick, r});
-  const RobotDecision d = decide(*cfg.rules, current, scratch, ch);
-  newly += apply_decision_to_grid(grid, current, r, d);
+  const std::span<const CandidateOf<D>> candidates(scratch.data(), scratch.size());
+  const auto ch = choose(*cfg.rules, cfg.terms, candidates, draw_site<D>(cfg.scenario.seed, env.tick, r));
+  const auto d = decide(*cfg.rules, current, candidates, ch);
+  newly = newly + apply_decision_to_grid(grid, current, r, d);
   return d;
 }
 
 // One robot's planning step: its decision on the grid, then on its record. Returns how many cells
 // it newly marked visited.
-template <EnvironmentGrid G>
-int64_t plan_robot(const EnvironmentConfig& cfg, EnvironmentState& env, G& grid, int32_t r,
-                   std::vector<Candidate>& scratch) {
-  int64_t newly = 0;
+template <class Cfg, class Env, class G, class Vec>
+CountOf<typename Cfg::Domain> plan_robot(const Cfg& cfg, Env& env, G& grid, int32_t r, Vec& scratch) {
+  CountOf<typename Cfg::Domain> newly(0);
   apply_decision_to_robot(cfg, env, r, decide_on_grid(cfg, env, grid, r, scratch, newly));
   return newly;
 }
 
 // The deposit of one robot around `centre`, window cells in raster order.
-template <EnvironmentGrid G>
-void deposit_around(const EnvironmentConfig& cfg, G& grid, CellIndex centre, int64_t tick) {
-  const Window w = window_around(centre, cfg.scenario.params.s_range, cfg.scenario.map_size);
-  for (int32_t i = w.i_lo; i <= w.i_hi; ++i)
-    for (int32_t j = w.j_lo; j <= w.j_hi; ++j)
-      grid.deposit(CellIndex{i, j}, tick, cfg.deposit.amount(i - centre[0], j - centre[1]));
+template <class Cfg, class G, class Cell>
+void deposit_around(const Cfg& cfg, G& grid, const Cell& centre, int64_t tick) {
+  const int32_t s_range = cfg.scenario.params.s_range;
+  const auto w = window_around(centre, s_range, cfg.scenario.map_size);
+  for_each_window_cell(w, centre, s_range, [&](const auto& cell, const auto& in_window, int32_t di, int32_t dj) {
+    num::when(in_window, grid, [&](G& g) {
+      g.deposit(cell, tick, num::traced("exploration::deposit_around", cfg.deposit.amount(di, dj)));
+    });
+  });
 }
 
 // The spec's stages: robots one after another in index order. Any other Stages (parallel
 // groups, prefetching) must give exactly these results.
 struct IndexOrder {
-  template <EnvironmentGrid G>
-  int64_t plan(const EnvironmentConfig& cfg, EnvironmentState& env, G& grid) const {
-    std::vector<Candidate> scratch;
-    int64_t newly = 0;
+  template <class Cfg, class Env, class G>
+  CountOf<typename Cfg::Domain> plan(const Cfg& cfg, Env& env, G& grid) const {
+    using D = typename Cfg::Domain;
+    std::vector<CandidateOf<D>> scratch;
+    CountOf<D> newly(0);
     for (std::size_t r = 0; r < env.robots.size(); ++r)
-      newly += plan_robot(cfg, env, grid, static_cast<int32_t>(r), scratch);
+      newly = newly + plan_robot(cfg, env, grid, static_cast<int32_t>(r), scratch);
     return newly;
   }
-  template <EnvironmentGrid G>
-  void deposit(const EnvironmentConfig& cfg, const EnvironmentState& env, G& grid) const {
-    for (const CellIndex& c : env.deposit_centre) deposit_around(cfg, grid, c, env.tick);
+  template <class Cfg, class Env, class G>
+  void deposit(const Cfg& cfg, const Env& env, G& grid) const {
+    for (const auto& c : env.deposit_centre) deposit_around(cfg, grid, c, env.tick);
   }
 };
 
@@ -210,10 +242,9 @@ EnvironmentState initial_environment(const EnvironmentConfig& cfg, G& grid, cons
 
 // Stages 2 to 5 of a step, whether it plans given (the handshake's verdict, or another protocol's:
 // the FMI Environment's epoch handshake decides it from its own inputs).
-template <EnvironmentGrid G, class Stages = IndexOrder>
-void environment_stages(const EnvironmentConfig& cfg, EnvironmentState& env, G& grid, bool planning,
-                        const Stages& stages = Stages{}) {
-  if (planning) env.progress.visited += stages.plan(cfg, env, grid);
+template <class Cfg, class Env, class G, class Stages = IndexOrder>
+void environment_stages(const Cfg& cfg, Env& env, G& grid, bool planning, const Stages& stages = Stages{}) {
+  if (planning) env.progress.visited = env.progress.visited + stages.plan(cfg, env, grid);
   ++env.tick;
   grid.evaporate(env.tick);
   if (planning) {
@@ -224,16 +255,9 @@ void environment_stages(const EnvironmentConfig& cfg, EnvironmentState& env, G& 
 }
 
 // One Environment step (the stages above). all_arrived is ignored in abstract mode.
-template <EnvironmentGrid G, class Stages = IndexOrder>
-void environment_step(const EnvironmentConfig& cfg, EnvironmentState& env, G& grid, bool all_arrived,
-                      const Stages& stages = Stages{}) {
-  bool planning = true;
-  if (cfg.scenario.mode == Mode::cosim) {
-    const HandshakeStep hs = environment_handshake(env.handshake, all_arrived);
-    planning = hs.plan;
-    env.handshake = hs.next;
-  }
-  environment_stages(cfg, env, grid, planning, stages);
+template <class Cfg, class Env, class G, class Stages = IndexOrder>
+void environment_step(const Cfg& cfg, Env& env, G& grid, bool all_arrived, const Stages& stages = Stages{}) {
+  environment_stages(cfg, env, grid, handshake_stage(cfg.scenario.mode, env.handshake, all_arrived), stages);
 }
 
 // FNV-1a over the bits of every cell's pheromone at tick, raster order.

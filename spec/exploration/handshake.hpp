@@ -48,6 +48,15 @@ struct HandshakeStepT {
 template <class D>
 HandshakeStepT<D> environment_handshake_rule(const HandshakeStateT<D>& s, const typename D::Bool& all_arrived);
 
+// Stage 1 of the Environment's step (environment_step.hpp): whether it plans, the handshake
+// state advanced by environment_handshake_rule; in abstract mode every step plans.
+template <class D>
+typename D::Bool handshake_stage_rule(Mode mode, HandshakeStateT<D>& s, const typename D::Bool& all_arrived);
+
+// all_arrived_rule's loop body: the conjunction so far and controller k's output.
+template <class D>
+typename D::Bool all_arrived_step_rule(const typename D::Bool& all, const typename D::Bool& output);
+
 // The Environment's planning input: every controller's onDestinationOutput is 1, for n
 // controllers whose outputs output_of(k) gives (no copy of them on the master's hot path). The
 // one function the master (model and impl) and the proofs call.
@@ -60,9 +69,25 @@ struct EpochStepT {
   typename D::Int epoch;   // the Environment's epoch after the step
 };
 
+// epoch_environment_rule's loop body: ready so far, and controller k shows (epoch, arrived).
+template <class D>
+typename D::Bool epoch_ready_step_rule(const typename D::Bool& ready, const typename D::Int& epoch,
+                                       const typename D::Int& ack, const typename D::Bool& done);
+
+// The Environment's next epoch after a plan: epoch + 1 mod kEpochs.
+template <class D>
+typename D::Int next_epoch_rule(const typename D::Int& epoch);
+
 template <class D>
 EpochStepT<D> epoch_environment_rule(const typename D::Int& epoch, std::span<const typename D::Int> acks,
                                      std::span<const typename D::Bool> done);
+
+// What an epoch controller shows the Environment (FMI: epochAck and onDestinationOutput).
+template <class D>
+struct EpochPortT {
+  typename D::Int ack;
+  typename D::Bool done;
+};
 
 template <class D>
 struct EpochControllerT {
@@ -86,5 +111,8 @@ struct HandshakeStep {
 inline HandshakeState initial_handshake() { return HandshakeState{1, 0}; }
 
 HandshakeStep environment_handshake(HandshakeState s, bool all_arrived);
+
+// handshake_stage_rule on the concrete state: whether the step plans; advances s in cosim mode.
+bool handshake_stage(Mode mode, HandshakeState& s, bool all_arrived);
 
 }  // namespace swarmcheck::exploration

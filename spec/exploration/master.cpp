@@ -10,6 +10,11 @@ bool all_arrived(std::span<const ControllerState> controllers) {
                                          [&](std::size_t k) { return controllers[k].on_destination_output == 1; });
 }
 
+sym::Bool environment_input(std::span<const sym::Bool> idle_outputs) {
+  return num::traced("exploration::master_step",
+                     all_arrived_rule<num::Symbolic>(idle_outputs.size(), [&](std::size_t k) { return idle_outputs[k]; }));
+}
+
 StepRecord make_step_record(const EnvironmentState& env, uint64_t pheromone_digest,
                             std::span<const ControllerState> controllers, std::span<const BodyState> bodies,
                             std::span<const IntocpsBodyState> intocps) {

@@ -9,6 +9,15 @@
 //   robots:       ctrl_i+ := controller_step(ctrl_i-, {body_i-, env-.waypoint_i, env_output})
 //                 body_i+ := body_step(body_i-, ctrl_i-.servo_left, ctrl_i-.servo_right, dt)
 //   environment:  env+ := environment_step(env-, all_arrived)
+// The Gauss-Seidel order (MasterOrder::gauss_seidel; the FMI master's `gauss-seidel` over a
+// multi-model whose instances are the controllers and bodies, then the Environment) steps the
+// robots first and lets the Environment read the controllers' NEW outputs (x+):
+//   robots:       as above, with env_output := env-.output
+//   environment:  env+ := environment_step(env-, environment_input(ctrl+))
+// What the Environment reads of the controllers is environment_input(controllers): all_arrived
+// of their outputs (the flag handshake), or each one's port (the epoch handshake). master_step
+// is a template over the System and over what its controllers() are, so that proofs/ runs this
+// very function on symbolic controllers.
 // abstract mode (the thesis's preliminary version) has no controllers or bodies to speak of:
 // every step plans and each robot then stands on its new waypoint.
 //
@@ -20,9 +29,12 @@
 //   void place_bodies_on_waypoints()                     abstract mode
 #include <cstdint>
 #include <span>
+#include <vector>
 
 #include "spec/exploration/environment_step.hpp"
+#include "spec/exploration/handshake.hpp"
 #include "spec/exploration/types.hpp"
+#include "spec/util/demand.hpp"
 
 namespace swarmcheck::exploration {
 
@@ -30,17 +42,42 @@ namespace swarmcheck::exploration {
 // handshake.hpp over their onDestinationOutput).
 bool all_arrived(std::span<const ControllerState> controllers);
 
+// What the Environment reads of the controllers (see above): all_arrived for concrete ones;
+// for symbolic ones, all_arrived_rule of their outputs, or a copy of their epoch ports.
+inline bool environment_input(std::span<const ControllerState> controllers) { return all_arrived(controllers); }
+sym::Bool environment_input(std::span<const sym::Bool> idle_outputs);
+template <class D>
+std::vector<EpochPortT<D>> environment_input(std::span<const EpochPortT<D>> ports) {
+  std::vector<EpochPortT<D>> read;
+  for (const EpochPortT<D>& p : ports)
+    read.push_back({num::traced("exploration::master_step", p.ack), num::traced("exploration::master_step", p.done)});
+  return read;
+}
+
+enum class MasterOrder { jacobi, gauss_seidel };
+
 template <class System>
-void master_step(Mode mode, System& system) {
+void master_step(Mode mode, System& system, MasterOrder order = MasterOrder::jacobi) {
   if (mode == Mode::abstract) {
-    system.environment_step(true);
-    system.place_bodies_on_waypoints();
+    // A system with no such stages (the proofs' symbolic ones) has no abstract mode.
+    if constexpr (requires { system.environment_step(true); }) {
+      system.environment_step(true);
+      system.place_bodies_on_waypoints();
+    } else {
+      SWARM_DEMAND(mode != Mode::abstract);
+    }
     return;
   }
-  const bool arrived = all_arrived(system.controllers());
-  const int32_t env_output = system.environment_output();
-  system.robots_step(env_output);
-  system.environment_step(arrived);
+  if (order == MasterOrder::jacobi) {
+    const auto arrived = environment_input(system.controllers());
+    const auto env_output = system.environment_output();
+    system.robots_step(env_output);
+    system.environment_step(arrived);
+  } else {
+    const auto env_output = system.environment_output();
+    system.robots_step(env_output);
+    system.environment_step(environment_input(system.controllers()));
+  }
 }
 
 // The observable state after a step: one trace record (what impl and model must agree on).

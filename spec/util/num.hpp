@@ -32,6 +32,7 @@ struct Symbolic {
 inline double select(bool c, double a, double b) { return c ? a : b; }
 inline bool select(bool c, bool a, bool b) { return c ? a : b; }
 inline int32_t select(bool c, int32_t a, int32_t b) { return c ? a : b; }
+inline int64_t select(bool c, int64_t a, int64_t b) { return c ? a : b; }
 inline double abs(double x) { return std::fabs(x); }
 inline double sqrt(double x) { return std::sqrt(x); }
 inline double exp(double x) { return std::exp(x); }
@@ -70,6 +71,48 @@ template <class F, class G>
 auto branch(const sym::Bool& c, F&& then_f, G&& else_f) {
   if (c.is_literal()) return c.literal() ? then_f() : else_f();
   return merge(c, then_f(), else_f());
+}
+
+// A rule's result named as that rule's (sym.hpp, call nodes): the identity in the concrete
+// domain, compiled away; in the symbolic one a node that lets proofs/ read off which spec
+// functions a property's expression passes through.
+template <class T>
+constexpr const T& traced(const char* /*fn*/, const T& x) {
+  return x;
+}
+inline sym::Real traced(const char* fn, const sym::Real& x) { return sym::mark(fn, x); }
+inline sym::Bool traced(const char* fn, const sym::Bool& x) { return sym::mark(fn, x); }
+inline sym::Int traced(const char* fn, const sym::Int& x) { return sym::mark(fn, x); }
+
+// An effect on a state taken when c holds: `effect(state)`. The concrete code runs it only then;
+// the symbolic one runs it on a copy and merges the copy back, field by field
+// (`merge(c, changed, state)`, found by argument-dependent lookup for the state's type).
+template <class S, class F>
+void when(bool c, S& state, F&& effect) {
+  if (c) effect(state);
+}
+template <class S, class F>
+void when(const sym::Bool& c, S& state, F&& effect) {
+  if (c.is_literal()) {
+    if (c.literal()) effect(state);
+    return;
+  }
+  S changed = state;
+  effect(changed);
+  state = merge(c, changed, state);
+}
+// The same for an effect with a result: c ? effect(state) : otherwise.
+template <class S, class F, class T>
+T when_else(bool c, S& state, F&& effect, const T& otherwise) {
+  return c ? static_cast<T>(effect(state)) : otherwise;
+}
+template <class S, class F, class T>
+T when_else(const sym::Bool& c, S& state, F&& effect, const T& otherwise) {
+  if (c.is_literal()) return c.literal() ? static_cast<T>(effect(state)) : otherwise;
+  S changed = state;
+  const T r = effect(changed);
+  state = merge(c, changed, state);
+  return select(c, r, otherwise);
 }
 
 // True for the concrete domain (for the few places that must assert on concrete values only).

@@ -97,6 +97,8 @@ const char* to_string(Op op) {
     case Op::select: return "select";
     case Op::draw: return "draw";
     case Op::to_real: return "to_real";
+    case Op::call: return "call";
+    case Op::function: return "function";
   }
   return "?";
 }
@@ -203,6 +205,89 @@ Bool is_nan(const Real& x) {
 Real to_real(const Int& x) {
   if (x.is_literal()) return Real(static_cast<double>(x.literal()));
   return Real(make(Op::to_real, Sort::real, {x.node()}));
+}
+
+namespace {
+
+template <class T>
+T marked(std::string_view fn, const T& x, Sort sort) {
+  if (x.is_literal()) return x;
+  auto n = std::make_shared<Node>();
+  n->op = Op::call;
+  n->sort = sort;
+  n->name = std::string(fn);
+  n->args = {x.node()};
+  return T(NodePtr(std::move(n)));
+}
+
+NodePtr applied(const std::string& name, const std::vector<Int>& args, Sort sort) {
+  auto n = std::make_shared<Node>();
+  n->op = Op::function;
+  n->sort = sort;
+  n->name = name;
+  for (const Int& a : args) n->args.push_back(a.node());
+  return n;
+}
+
+// Every node under the roots once, children before parents (iterative: DAGs of many robots are deep).
+std::vector<const Node*> post_order(const std::vector<NodePtr>& roots) {
+  std::vector<const Node*> out;
+  std::unordered_set<const Node*> seen;
+  std::vector<std::pair<const Node*, bool>> stack;
+  for (auto it = roots.rbegin(); it != roots.rend(); ++it) stack.push_back({it->get(), false});
+  while (!stack.empty()) {
+    auto [n, expanded] = stack.back();
+    if (expanded) {
+      stack.pop_back();
+      out.push_back(n);
+      continue;
+    }
+    if (!seen.insert(n).second) {
+      stack.pop_back();
+      continue;
+    }
+    stack.back().second = true;
+    for (auto it = n->args.rbegin(); it != n->args.rend(); ++it)
+      if (!seen.count(it->get())) stack.push_back({it->get(), false});
+  }
+  return out;
+}
+
+}  // namespace
+
+Real mark(std::string_view fn, const Real& x) { return marked(fn, x, Sort::real); }
+Bool mark(std::string_view fn, const Bool& x) { return marked(fn, x, Sort::boolean); }
+Int mark(std::string_view fn, const Int& x) { return marked(fn, x, Sort::integer); }
+
+Real real_function(const std::string& name, const std::vector<Int>& args) {
+  return Real(applied(name, args, Sort::real));
+}
+Bool bool_function(const std::string& name, const std::vector<Int>& args) {
+  return Bool(applied(name, args, Sort::boolean));
+}
+Int int_function(const std::string& name, const std::vector<Int>& args) {
+  return Int(applied(name, args, Sort::integer));
+}
+
+std::vector<std::string> called_functions(const std::vector<NodePtr>& roots) {
+  std::vector<std::string> out;
+  std::unordered_set<std::string> seen;
+  for (const Node* n : post_order(roots))
+    if (n->op == Op::call && seen.insert(n->name).second) out.push_back(n->name);
+  return out;
+}
+
+std::vector<NodePtr> calls_of(const std::vector<NodePtr>& roots, std::string_view fn) {
+  // Post-order gives raw pointers; the shared pointers are found again from their parents.
+  std::unordered_map<const Node*, NodePtr> owner;
+  for (const NodePtr& r : roots) owner.emplace(r.get(), r);
+  std::vector<NodePtr> out;
+  for (const Node* n : post_order(roots)) {
+    for (const NodePtr& a : n->args) owner.emplace(a.get(), a);
+  }
+  for (const Node* n : post_order(roots))
+    if (n->op == Op::call && n->name == fn) out.push_back(owner.at(n));
+  return out;
 }
 
 std::vector<NodePtr> variables(const std::vector<NodePtr>& roots) {

@@ -10,9 +10,19 @@
 // Nodes are immutable and shared; operations on two literals fold with the same double, bool or
 // integer operation the concrete interpretation performs (so 1 / r is the double the code
 // computes). Integer nodes hold small values (cell offsets, indices, epochs).
+//
+// Two kinds of node carry names:
+//   call      the identity on its one argument, naming the spec function that computed it
+//             (num::traced): what a property's expression passes through is read off its DAG
+//             (called_functions), which is how proofs/ checks that an obligation reads the
+//             functions the executed step calls
+//   function  an uninterpreted function of integer arguments (a symbolic map's contents, say:
+//             the obstacle flag of cell (i, j)), the same function for the same name
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <string_view>
+#include <unordered_map>
 #include <vector>
 
 namespace swarmcheck::sym {
@@ -29,6 +39,8 @@ enum class Op : uint8_t {
   select,                                         // (condition, then, else), any sort
   draw,                                           // integer in [0, args[0]): a random draw
   to_real,                                        // an integer read as a real
+  call,                                           // identity, naming the spec function (name)
+  function,                                       // uninterpreted function (name) of integers
 };
 
 struct Node;
@@ -50,6 +62,7 @@ class Int;
 
 class Real {
  public:
+  Real() : Real(0.0) {}
   Real(double v);   // NOLINT(google-explicit-constructor): literals mix with symbols
   explicit Real(NodePtr n) : n_(std::move(n)) {}
   static Real var(std::string name);
@@ -63,6 +76,7 @@ class Real {
 
 class Bool {
  public:
+  Bool() : Bool(false) {}
   Bool(bool v);   // NOLINT(google-explicit-constructor)
   explicit Bool(NodePtr n) : n_(std::move(n)) {}
   static Bool var(std::string name);
@@ -76,6 +90,7 @@ class Bool {
 
 class Int {
  public:
+  Int() : Int(0) {}
   Int(int32_t v);   // NOLINT(google-explicit-constructor)
   explicit Int(NodePtr n) : n_(std::move(n)) {}
   static Int var(std::string name);
@@ -139,7 +154,25 @@ Real fmin(const Real& x, const Real& y);
 Bool is_nan(const Real& x);
 Real to_real(const Int& x);
 
+// A call node: x, named as the result of the spec function fn (a literal stays a literal: it
+// carries no symbol a property could depend on).
+Real mark(std::string_view fn, const Real& x);
+Bool mark(std::string_view fn, const Bool& x);
+Int mark(std::string_view fn, const Int& x);
+
+// The uninterpreted function `name` applied to integer arguments.
+Real real_function(const std::string& name, const std::vector<Int>& args);
+Bool bool_function(const std::string& name, const std::vector<Int>& args);
+Int int_function(const std::string& name, const std::vector<Int>& args);
+
 // The variables a set of expressions reads, each once, in first-seen order.
 std::vector<NodePtr> variables(const std::vector<NodePtr>& roots);
+
+// The spec functions a set of expressions passes through (the names of their call nodes), each
+// once, in first-seen order.
+std::vector<std::string> called_functions(const std::vector<NodePtr>& roots);
+
+// The call nodes named fn under a set of roots, each once, children before parents.
+std::vector<NodePtr> calls_of(const std::vector<NodePtr>& roots, std::string_view fn);
 
 }  // namespace swarmcheck::sym

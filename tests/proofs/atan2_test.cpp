@@ -51,9 +51,9 @@ TEST(Atan2Proof, WithoutTheFixTheBearingFlipsAcrossTheCutBehindTheRobot) {
 }
 
 TEST(Atan2Proof, Z3ProvesTheFixAndRefutesTheRawBearingConfirmedWithStdAtan2) {
-  const ObligationReport ok = run_in_process(*find_obligation("atan2-fix"), 20000);
+  const ObligationReport ok = run_in_process(*find_obligation("atan2-fix"), kQueryTimeoutMs);
   EXPECT_EQ(ok.result, Verdict::proved) << ok.detail;
-  const ObligationReport bad = run_in_process(*find_obligation("atan2-without-fix"), 20000);
+  const ObligationReport bad = run_in_process(*find_obligation("atan2-without-fix"), kQueryTimeoutMs);
   EXPECT_EQ(bad.result, Verdict::refuted) << bad.detail;
   EXPECT_NE(bad.detail.find("confirmed by running atan2_fix_rule"), std::string::npos) << bad.detail;
 }

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <array>
 #include <cstdio>
 #include <filesystem>
@@ -10,6 +11,7 @@
 #include <nlohmann/json.hpp>
 #include <set>
 #include <string>
+#include <vector>
 
 namespace {
 
@@ -46,23 +48,34 @@ TEST(ProveCli, JsonListsEveryObligationWithItsExpectedVerdictAllMet) {
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_TRUE(j.at("all_met").get<bool>());
   std::set<std::string> names;
+  double seconds = 0;
   for (const auto& o : j.at("obligations")) {
     names.insert(o.at("name").get<std::string>());
+    seconds += o.at("seconds").get<double>();
     EXPECT_TRUE(o.at("met").get<bool>()) << o.dump(2);
     EXPECT_EQ(o.at("result"), o.at("expected")) << o.dump(2);
     EXPECT_FALSE(o.at("assumptions").empty());
-    // What a proof is about is the code: every obligation expected to hold reads spec functions.
+    // What a proof is about is the code: every obligation expected to hold reads spec functions,
+    // and reads every function the step calls on its property's path (nothing unread).
     if (o.at("expected") == "proved") {
       EXPECT_FALSE(o.at("reads").empty()) << o.dump(2);
       for (const auto& f : o.at("reads")) EXPECT_EQ(f.get<std::string>().rfind("exploration::", 0), 0U) << f;
     }
+    EXPECT_TRUE(o.at("unread").empty()) << o.dump(2);
+    const auto reads = o.at("reads").get<std::vector<std::string>>();
+    for (const auto& f : o.at("step_calls"))
+      EXPECT_NE(std::find(reads.begin(), reads.end(), f.get<std::string>()), reads.end()) << o.at("name") << ": " << f;
   }
-  for (const char* required : {"servo-saturation", "servo-thesis-clamp", "atan2-fix", "atan2-without-fix",
-                               "handshake-safety", "handshake-gauss-seidel", "handshake-late-controller",
-                               "handshake-epoch-gauss-seidel", "handshake-epoch-late-controller", "handshake-safety-any-robots",
+  for (const char* required : {"servo-saturation", "servo-thesis-clamp", "servo-controller-range", "atan2-fix",
+                               "atan2-without-fix", "handshake-safety", "handshake-gauss-seidel",
+                               "handshake-late-controller", "handshake-epoch-gauss-seidel",
+                               "handshake-epoch-late-controller", "handshake-safety-any-robots",
+                               "all-arrived-any-robots", "handshake-epoch-any-robots", "handshake-epoch-late-any-robots",
                                "pheromone-bounds", "occupancy"})
     EXPECT_TRUE(names.count(required)) << required;
-  EXPECT_LT(j.at("total_seconds").get<double>(), 60.0);
+  // The total is what the obligations took (no timing bound here: the machine's load decides the
+  // seconds; docs/proofs.md states the measured figure).
+  EXPECT_DOUBLE_EQ(j.at("total_seconds").get<double>(), seconds);
 }
 
 TEST(ProveCli, RefutedProtocolObligationsWriteTheirTraces) {

@@ -115,12 +115,12 @@ TEST(HandshakeProof, Z3VerdictsAndTracesThatReadBackAndShow) {
   const std::filesystem::path dir = std::filesystem::temp_directory_path() / ("sc-hs-" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
   for (const char* name : {"handshake-safety", "handshake-epoch-gauss-seidel", "handshake-epoch-late-controller"}) {
-    const ObligationReport r = run_in_process(*find_obligation(name), 20000);
+    const ObligationReport r = run_in_process(*find_obligation(name), kQueryTimeoutMs);
     EXPECT_EQ(r.result, Verdict::proved) << name << ": " << r.detail;
     EXPECT_FALSE(r.trace.has_value());
   }
   for (const char* name : {"handshake-gauss-seidel", "handshake-late-controller"}) {
-    const ObligationReport r = run_in_process(*find_obligation(name), 20000);
+    const ObligationReport r = run_in_process(*find_obligation(name), kQueryTimeoutMs);
     EXPECT_EQ(r.result, Verdict::refuted) << name << ": " << r.detail;
     EXPECT_NE(r.detail.find("confirmed by replaying"), std::string::npos) << r.detail;
     ASSERT_TRUE(r.trace.has_value());

@@ -87,7 +87,7 @@ RC_GTEST_PROP(OccupancyProof, SymbolicChoiceInZ3IsTheExecutedChoiceOnThePresentC
 }
 
 TEST(OccupancyProof, Z3ProvesOnePlanningStepKeepsOccupancy) {
-  const ObligationReport r = run_in_process(*find_obligation("occupancy"), 20000);
+  const ObligationReport r = run_in_process(*find_obligation("occupancy"), kQueryTimeoutMs);
   EXPECT_EQ(r.result, Verdict::proved) << r.detail;
   for (const QueryRecord& q : r.queries) EXPECT_EQ(q.answer, "unsat") << q.label;
 }

@@ -18,7 +18,7 @@ TEST(ProofMutation, TheBrokenObligationIsRefutedWithACounterexampleTheExecutedCo
   const Obligation* o = find_obligation(kFaultObligation);
   ASSERT_NE(o, nullptr) << "fault " << kFaultName << " names no obligation " << kFaultObligation;
   ASSERT_EQ(o->expected, Verdict::proved) << "a fault must break an obligation that holds";
-  const ObligationReport r = run_isolated(*o, 45, 20000);
+  const ObligationReport r = run_isolated(*o, kObligationTimeoutS, kQueryTimeoutMs);
   EXPECT_EQ(r.result, Verdict::refuted) << "fault " << kFaultName << ": " << r.detail;
   EXPECT_FALSE(r.met()) << "prove would still exit 0";
   EXPECT_NE(r.detail.find("confirmed"), std::string::npos) << r.detail;
@@ -27,7 +27,7 @@ TEST(ProofMutation, TheBrokenObligationIsRefutedWithACounterexampleTheExecutedCo
               r.detail.c_str());
   // The proof for every number of robots reads the same rules: it must not still say proved.
   if (std::string(kFaultObligation) == "handshake-safety") {
-    const ObligationReport any = run_isolated(*find_obligation("handshake-safety-any-robots"), 45, 20000);
+    const ObligationReport any = run_isolated(*find_obligation("handshake-safety-any-robots"), kObligationTimeoutS, kQueryTimeoutMs);
     EXPECT_NE(any.result, Verdict::proved) << "the counter abstraction misses fault " << kFaultName;
     std::printf("fault %s: handshake-safety-any-robots %s: %s\n", kFaultName, to_string(any.result), any.detail.c_str());
   }

@@ -32,7 +32,7 @@ TEST(ProofRunner, AProverThatCrashesIsReportedUnknown) {
 }
 
 TEST(ProofRunner, TheChildsReportComesBackWhole) {
-  const ObligationReport r = run_isolated(*find_obligation("handshake-late-controller"), 30, 20000);
+  const ObligationReport r = run_isolated(*find_obligation("handshake-late-controller"), 30, kQueryTimeoutMs);
   EXPECT_EQ(r.result, Verdict::refuted) << r.detail;
   ASSERT_TRUE(r.trace.has_value());
   EXPECT_EQ(r.trace->file_name, "handshake-late-controller.jsonl");

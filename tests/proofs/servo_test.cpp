@@ -95,11 +95,11 @@ TEST(ServoProof, TheThesisClampLetsNaNThroughOnConcreteValues) {
 }
 
 TEST(ServoProof, Z3ProvesTheSpecsSaturationAndRefutesTheThesisClampWithNaN) {
-  const ObligationReport ok = run_in_process(*find_obligation("servo-saturation"), 20000);
+  const ObligationReport ok = run_in_process(*find_obligation("servo-saturation"), kQueryTimeoutMs);
   EXPECT_EQ(ok.result, Verdict::proved) << ok.detail;
   ASSERT_EQ(ok.queries.size(), 1U);
   EXPECT_EQ(ok.queries[0].answer, "unsat");
-  const ObligationReport bad = run_in_process(*find_obligation("servo-thesis-clamp"), 20000);
+  const ObligationReport bad = run_in_process(*find_obligation("servo-thesis-clamp"), kQueryTimeoutMs);
   EXPECT_EQ(bad.result, Verdict::refuted) << bad.detail;
   ASSERT_EQ(bad.queries.size(), 1U);
   EXPECT_EQ(bad.queries[0].answer, "sat");
