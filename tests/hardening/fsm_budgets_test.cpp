@@ -54,8 +54,11 @@ TEST(FsmBudgets, ObservableOnTheIssuesChainStopsAtTheMemoryOrTimeLimitWithThePai
   expect_stopped(run_binary(kBin, "fsm observable --plant " + chain + " --spec " + chain + " --memory-limit 64M"), files,
                  {"the observability check stopped after comparing ", "pairs of words' states", "over the limit of 64.0 MiB",
                   "raise it with --memory-limit"});
-  expect_stopped(run_binary(kBin, "fsm observable --plant " + chain + " --spec " + chain + " --time-limit 0.2"), files,
-                 {"the observability check stopped after comparing ", "the --time-limit of 0.2 s is over"});
+  // A 3 000-state chain's 9 x 10^6 pairs take about 10 s and 700 MB here (the 1 000-state one about
+  // 1 s, too close to a limit): a 2 s limit stops it well before the verdict.
+  const std::string big = gen::write(d / "big.fsm", gen::chain(3000, "a", "c\tuo"));
+  expect_stopped(run_binary(kBin, "fsm observable --plant " + big + " --spec " + big + " --time-limit 2 --memory-limit 0"),
+                 big + " || " + big, {"the observability check stopped after comparing ", "the --time-limit of 2 s is over"});
   // A chain of 60 fits both limits and gets its verdict.
   const std::string small = gen::write(d / "small.fsm", gen::chain(60, "a", "c\tuo"));
   const auto r = run_binary(kBin, "fsm observable --plant " + small + " --spec " + small + " --memory-limit 64M --time-limit 60 --json");

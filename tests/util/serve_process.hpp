@@ -34,15 +34,17 @@ class ServeProcess {
   ServeProcess(const std::string& bin, const std::vector<std::string>& args) {
     int out[2];
     if (::pipe2(out, O_CLOEXEC) != 0) return;
+    // Everything the child needs is made before fork: a fuzzer forks from several threads, and
+    // the child of a threaded process may not allocate.
+    std::vector<std::string> all{bin, "serve", "--port", "0"};
+    all.insert(all.end(), args.begin(), args.end());
+    std::vector<char*> argv;
+    for (auto& a : all) argv.push_back(a.data());
+    argv.push_back(nullptr);
     pid_ = ::fork();
     if (pid_ == 0) {
       ::dup2(out[1], STDOUT_FILENO);
-      std::vector<std::string> all{bin, "serve", "--port", "0"};
-      all.insert(all.end(), args.begin(), args.end());
-      std::vector<char*> argv;
-      for (auto& a : all) argv.push_back(a.data());
-      argv.push_back(nullptr);
-      ::execv(bin.c_str(), argv.data());
+      ::execv(argv[0], argv.data());
       ::_exit(127);
     }
     ::close(out[1]);
