@@ -1,7 +1,7 @@
 # swarmcheck: the two commands of the README are `make run` and `make test`.
 JOBS ?= $(shell nproc)
 
-.PHONY: deps build run test test-debug bench pictures clean
+.PHONY: deps build run test test-debug fuzz bench pictures clean
 
 deps:
 	@scripts/install-deps
@@ -28,6 +28,15 @@ test-debug:
 	@cmake --preset debug >/dev/null
 	@cmake --build --preset debug -j $(JOBS)
 	ctest --preset debug -j $(JOBS)
+
+# The fuzz run of issue 38 over every verb of the binary: 10^4 mutated inputs, flags and HTTP
+# requests (tests/hardening/cli_fuzz.cpp); fails on any crash, exit status 3 or hang.
+# FUZZ_CASES and FUZZ_SEED change the run.
+FUZZ_CASES ?= 10000
+FUZZ_SEED ?= 1
+fuzz: build
+	@cmake --build --preset release -j $(JOBS) --target swarmcheck_cli_fuzz
+	build/bin/swarmcheck_cli_fuzz --cases $(FUZZ_CASES) --seed $(FUZZ_SEED) --jobs $(JOBS)
 
 # Google Benchmark, impl against model as a ratio. bench/results.json is system A's
 # (bench_exploration); the other systems write bench/results-<name>.json.

@@ -15,6 +15,7 @@
 
 #include "conformance/exploration/trace_io.hpp"
 #include "spec/util/hana_json.hpp"
+#include "spec/util/json_text.hpp"
 #include "spec/util/input_error.hpp"
 
 namespace {
@@ -37,8 +38,13 @@ bool within(const Json& o, const char* key, std::int64_t max, bool absent_ok) {
 
 // Whether replaying the trace whose first line is `header` stays within the budget.
 bool small_enough(const std::string& header) {
-  const Json h = Json::parse(header, nullptr, /*allow_exceptions=*/false);
-  if (h.is_discarded() || !h.is_object()) return true;   // refused before any simulation
+  Json h;
+  try {
+    h = swarmcheck::json_io::parse_json_text(header, "trace");
+  } catch (const swarmcheck::InputError&) {
+    return true;   // refused before any simulation
+  }
+  if (!h.is_object()) return true;
   const auto s = h.find("scenario");
   if (s == h.end() || !s->is_object()) return true;
   // max_steps defaults to 100000 when absent: over budget.

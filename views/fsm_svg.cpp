@@ -101,7 +101,8 @@ std::string styled_dot(const swarmcheck::supervisor::Automaton& a) {
   return out + "}\n";
 }
 
-std::optional<std::string> fsm_svg_within(const swarmcheck::supervisor::Automaton& a, std::chrono::milliseconds limit) {
+std::optional<std::string> fsm_svg_within(const swarmcheck::supervisor::Automaton& a, std::chrono::milliseconds limit,
+                                          const std::atomic<bool>* cancel) {
   const std::string dot = find_dot();
   if (dot.empty())
     throw InputError("graphviz", "the `dot` program is not installed (Debian: apt-get install graphviz); "
@@ -125,13 +126,18 @@ std::optional<std::string> fsm_svg_within(const swarmcheck::supervisor::Automato
   const int spawned = posix_spawn(&pid, dot.c_str(), &files, nullptr, argv.data(), environ);
   posix_spawn_file_actions_destroy(&files);
   if (spawned != 0) throw InputError("graphviz", std::string("cannot start dot: ") + std::strerror(spawned));
+  // Killed with the process if a signal ends it (it would lay out for hours, into a temporary file).
+  struct Child {
+    int slot;
+    ~Child() { impl::io::release_child(slot); }
+  } child{impl::io::register_child(pid)};
   const auto deadline = std::chrono::steady_clock::now() + limit;
   int status = 0;
   for (auto pause = std::chrono::microseconds(200);; pause = std::min(pause * 2, std::chrono::microseconds(20000))) {
     const pid_t done = ::waitpid(pid, &status, WNOHANG);
     if (done == pid) break;
     if (done < 0 && errno != EINTR) throw InputError("graphviz", std::string("lost dot: ") + std::strerror(errno));
-    if (std::chrono::steady_clock::now() >= deadline) {
+    if (std::chrono::steady_clock::now() >= deadline || (cancel && cancel->load())) {
       ::kill(pid, SIGKILL);
       while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
       }

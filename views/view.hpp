@@ -1,6 +1,7 @@
 #pragma once
 // `swarmcheck view FILE`: what FILE is, and the page that shows it. Every reader checks its input
 // like the other verbs do: bad input is an InputError naming file:line and what was expected.
+#include <atomic>
 #include <cstdint>
 #include <string>
 
@@ -13,7 +14,7 @@ enum class ViewKind { exploration, counterexample, handshake, mission, fsm };
 
 struct ViewOptions {
   int64_t max_records = 4000;   // longer traces are thinned evenly (field records always kept)
-  std::string mission_path;     // a mission trace's mission file, if not the one its header names
+  std::string mission_path;     // a mission trace's mission file (default: its header's name, next to the trace)
 };
 
 // From the file's first line: a JSON trace header (exploration, counterexample, handshake or
@@ -27,10 +28,11 @@ Page view_page(const std::string& path, const ViewOptions& o);
 Page exploration_page(const std::string& text, const std::string& path, const ViewOptions& o);
 Page handshake_page(const std::string& text, const std::string& path);
 Page mission_page(const std::string& text, const std::string& path, const ViewOptions& o);
-// The mission file a mission trace is shown with: --mission, else the one its header names (as
-// written, or beside the trace).
+// The mission file a mission trace is shown with: --mission, else the file of the name its header
+// gives, in the trace's folder (never the header's path as written).
 std::string mission_file_of_trace(const std::string& text, const std::string& path, const ViewOptions& o);
-Page fsm_page(const std::string& text, const std::string& path);
+// cancel: dot is killed when it is set (a server stopping).
+Page fsm_page(const std::string& text, const std::string& path, const std::atomic<bool>* cancel = nullptr);
 
 // The colours of the heat map, obstacles and robots (views/svg.hpp), for the pages.
 json_io::Json exploration_palette();

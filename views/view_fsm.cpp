@@ -7,7 +7,7 @@ namespace swarmcheck::views {
 
 inline constexpr std::size_t kListedTransitionsMax = 200'000;
 
-Page fsm_page(const std::string& text, const std::string& path) {
+Page fsm_page(const std::string& text, const std::string& path, const std::atomic<bool>* cancel) {
   const swarmcheck::supervisor::Automaton a = impl::supervisor::read_fsm(text, path);
   const std::size_t transitions = swarmcheck::supervisor::transition_count(a);
   json_io::Json states = json_io::Json::array();
@@ -26,7 +26,7 @@ Page fsm_page(const std::string& text, const std::string& path) {
   json_io::Json data = {{"kind", "fsm"}, {"file", path}, {"states", states}, {"events", events},
                         {"transitions", transitions}, {"listed_transitions", std::min(listed, kListedTransitionsMax)}};
   std::optional<std::string> svg;
-  if (transitions <= kLayoutTransitionsMax && (svg = fsm_svg_within(a, kLayoutTimeMax))) {
+  if (transitions <= kLayoutTransitionsMax && (svg = fsm_svg_within(a, kLayoutTimeMax, cancel))) {
     data["svg"] = *svg;
   } else if (transitions <= kLayoutTransitionsMax) {
     data["svg"] = nullptr;

@@ -19,15 +19,18 @@ using json_io::Json;
 
 Json point(const sm::Point& p) { return Json::array({p[0], p[1]}); }
 
+// --mission, else the file of the header's mission name in the trace's own folder. The path the
+// header names is never opened as written: a trace is data, and one naming /etc/shadow or
+// ../../secret must not make `view` open it (and echo its first byte in a message).
 std::string named_mission_file(const Json& header, const std::string& path, const ViewOptions& o) {
   if (!o.mission_path.empty()) return o.mission_path;
   const std::string named = json_io::string_member(header, "mission");
   if (named.empty()) throw InputError(path + ":1", "the header names no mission file; give it with --mission FILE");
-  if (std::filesystem::exists(named)) return named;
-  const auto beside = std::filesystem::path(path).parent_path() / std::filesystem::path(named).filename();
-  if (std::filesystem::exists(beside)) return beside.string();
-  throw InputError(path + ":1", "the mission file \"" + named +
-                                    "\" named in the header cannot be found; give it with --mission FILE");
+  const std::filesystem::path name = std::filesystem::path(named).filename();
+  const auto beside = std::filesystem::path(path).parent_path() / name;
+  if (!name.empty() && name != "." && name != ".." && std::filesystem::is_regular_file(beside)) return beside.string();
+  throw InputError(path + ":1", "the mission file of the header (\"" + named + "\") is looked up next to the trace, as " +
+                                    beside.string() + ", and is not there; give it with --mission FILE");
 }
 
 sm::Mission load_named_mission(const Json& header, const std::string& path, const ViewOptions& o) {

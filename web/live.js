@@ -83,7 +83,10 @@ export function showLive(app, data) {
   const picker = el('input', { type: 'file', class: 'view-file', 'aria-label': 'trace or .fsm file', onchange: async () => {
     const file = picker.files[0];
     if (!file) return;
-    const r = await fetch('/api/view', { method: 'POST', body: await file.text() });
+    // API bodies are JSON (a page of another origin cannot send that without asking first); the
+    // name is only shown in messages and the page's title.
+    const r = await fetch('/api/view', { method: 'POST', headers: { 'Content-Type': 'application/json' },
+                                         body: JSON.stringify({ name: file.name, text: await file.text() }) });
     const text = await r.text();
     if (!r.ok) { viewStatus.className = 'status view-status error'; viewStatus.textContent = `HTTP ${r.status}: ${text}`; return; }
     viewStatus.className = 'status view-status ok';

@@ -20,7 +20,9 @@
 #include "conformance/exploration/trace_io.hpp"
 #include "proofs/obligations/handshake_trace.hpp"
 #include "spec/exploration/rng.hpp"
+#include "spec/exploration/scenario.hpp"
 #include "spec/util/hana_json.hpp"
+#include "spec/util/json_text.hpp"
 #include "spec/util/input_file.hpp"
 
 namespace swarmcheck::cli {
@@ -101,7 +103,7 @@ int conform_on_ranks(const ConformArgs& a, Json* json_out) {
     const fs::path scratch = fs::temp_directory_path() / ("swarmcheck-conform-rank" + std::to_string(session.rank()) + "-" + std::to_string(::getpid()));
     mpi::serve([&](const std::string& task) {
       ConformOptions o = a.options;
-      const Json t = Json::parse(task);
+      const Json t = json_io::parse_json_text(task, "MPI task");
       o.cases = t.at("cases").get<int>();
       o.seed = t.at("seed").get<uint64_t>();
       o.out_dir = scratch.string();   // rank 0 owns the files: it re-runs a diverging chunk itself
@@ -115,7 +117,7 @@ int conform_on_ranks(const ConformArgs& a, Json* json_out) {
   int cases_run = 0;
   std::size_t lowest = tasks.size();   // the lowest diverging chunk
   mpi::distribute(tasks, [&](std::size_t k, std::string reply) {
-    const Json r = Json::parse(reply);
+    const Json r = json_io::parse_json_text(reply, "MPI reply");
     cases_run += r.at("cases_run").get<int>();
     if (!r.at("agree").get<bool>()) lowest = std::min(lowest, k);
   }, [&](std::size_t k) { return k > lowest; });
@@ -124,7 +126,7 @@ int conform_on_ranks(const ConformArgs& a, Json* json_out) {
   ConformReport r;
   if (lowest < tasks.size()) {
     ConformArgs chunk = a;
-    const Json t = Json::parse(tasks[lowest]);
+    const Json t = json_io::parse_json_text(tasks[lowest], "MPI task");
     chunk.options.cases = t.at("cases").get<int>();
     chunk.options.seed = t.at("seed").get<uint64_t>();
     r = run_conform(chunk.options);
@@ -267,21 +269,24 @@ int conform(const ConformArgs& a) {
   return status;
 }
 
-// The "system" of a trace's header line ("" when the first line is not a JSON object).
-std::string trace_system(const std::string& path) {
+// A trace's header line. It is read with the JSON reader like every other input: a header
+// nested 200 000 deep crashed the raw parser.
+Json trace_header(const std::string& path) {
   io_input::check_input_file(path, "trace", false);   // a folder or /dev/zero: one message, not a hang
   std::ifstream in(path);
   std::string first;
   std::getline(in, first);
-  const Json h = Json::parse(first, nullptr, false);
-  return json_io::string_member(h, "system");
+  return json_io::parse_json_text(first, path);
 }
 
-int replay(const std::string& path, const std::string& against, std::uint64_t memory_limit_bytes) {
+int replay(const std::string& path, const std::string& against, const Budgets& budgets) {
   // A handshake counterexample from `swarmcheck prove` is shown step by step (nothing to re-run).
-  if (trace_system(path) == "handshake") return proofs::handshake::show_handshake_trace(path, stdout);
+  const Json header = trace_header(path);
+  if (json_io::string_member(header, "system") == "handshake") return proofs::handshake::show_handshake_trace(path, stdout);
   const Engine engine = against == "model" ? Engine::model : Engine::impl;
-  const ReplayResult r = replay_trace(path, engine, memory_limit_bytes);
+  const ReplayResult r = replay_trace(path, engine, budgets.memory_bytes);
+  if (budgets.report)   // the budget's estimate, as replay_trace checked it (the header is valid by now)
+    report_memory(budgets, kProcessBytes + static_cast<double>(estimated_bytes(engine, swarmcheck::exploration::scenario_from_json(header.at("scenario")))));
   if (r.recorded) fmt::print("recorded: {}\n", *r.recorded);
   if (!r.divergence) {
     fmt::print("replay on {}: reproduces the trace ({} records agree bit for bit)\n", against, r.records);
@@ -324,7 +329,7 @@ void add_replay_verb(CLI::App& app, int& exit_code) {
   auto budgets = std::make_shared<Budgets>();
   add_budget_options(cmd, *budgets, false);
   cmd->callback([path, against, budgets, &exit_code] {
-    exit_code = guarded([&] { return replay(*path, *against, budgets->memory_bytes); });
+    exit_code = guarded([&] { return replay(*path, *against, *budgets); });
   });
 }
 

@@ -26,6 +26,7 @@
 #include "impl/dse/sweep.hpp"
 #include "impl/io/atomic_file.hpp"
 #include "spec/exploration/scenario.hpp"
+#include "spec/util/json_text.hpp"
 
 namespace swarmcheck::cli {
 namespace {
@@ -86,7 +87,7 @@ class MpiExecutor : public Executor {
   void evaluate(const std::vector<Genome>& batch, const std::function<void(std::size_t, PointRuns)>& done) override {
     std::vector<std::string> tasks;
     for (const Genome& g : batch) tasks.push_back(json_io::Json(g).dump());
-    mpi::distribute(tasks, [&](std::size_t i, std::string reply) { done(i, point_runs_from_json(json_io::Json::parse(reply))); },
+    mpi::distribute(tasks, [&](std::size_t i, std::string reply) { done(i, point_runs_from_json(json_io::parse_json_text(reply, "MPI reply"))); },
                     [this](std::size_t) { return stop_.load(); });
   }
 
@@ -234,10 +235,12 @@ int dse_threads(const DseArgs& a) {
   // Points in memory at once: one a thread, no more threads than cores run (TBB), no more than there are points.
   const auto points_at_once = static_cast<int32_t>(std::min<uint64_t>(
       {static_cast<uint64_t>(threads), std::max(1u, std::thread::hardware_concurrency()), std::max<uint64_t>(1, space.size())}));
-  check_design_space(space, a.budgets.memory_bytes, points_at_once);
+  const double estimate = check_design_space(space, a.budgets.memory_bytes, points_at_once);
   const StopRequest stop(kDseStopMessage);
   ThreadExecutor executor(space, needed_columns(plan.config), a.threads, &stop.flag());
-  return run_rank0(a, space, executor, fmt::format("{} thread{}", threads, threads == 1 ? "" : "s"), stop);
+  const int status = run_rank0(a, space, executor, fmt::format("{} thread{}", threads, threads == 1 ? "" : "s"), stop);
+  report_memory(a.budgets, kProcessBytes + estimate);
+  return status;
 }
 
 // Under mpirun: every rank reads and checks the input (so every rank agrees on the points);
@@ -252,7 +255,7 @@ int dse_mpi(const DseArgs& a) {
       check_design_space(space, a.budgets.memory_bytes);   // one point at a time on each rank
       const std::vector<Column> columns = needed_columns(plan.config);
       mpi::serve([&](const std::string& task) {
-        const Genome g = json_io::Json::parse(task).get<Genome>();
+        const Genome g = json_io::parse_json_text(task, "MPI task").get<Genome>();
         return to_json(evaluate_point(space, g, columns)).dump();
       });
     } catch (const InputError&) {

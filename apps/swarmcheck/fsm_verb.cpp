@@ -13,6 +13,7 @@
 #include <set>
 
 #include "apps/swarmcheck/fsm_control_verb.hpp"
+#include "apps/swarmcheck/fsm_peaks.hpp"
 #include "apps/swarmcheck/verb.hpp"
 #include "spec/util/hana_json.hpp"
 #include "conformance/supervisor/engine.hpp"
@@ -39,7 +40,7 @@ struct FsmOptions {
   std::string to = "fsm";
   std::string engine = "impl";
   bool json = false;
-  Budgets budgets;   // --memory-limit of product and synth (the impl engine)
+  Budgets budgets;   // --memory-limit, --time-limit of product, synth and compare (the impl engine)
 };
 
 void print_json(const Json& j) { fmt::print("{}\n", json_io::dump_text(j, 2)); }
@@ -156,12 +157,15 @@ int run_product(const FsmOptions& o) {
   Automaton p;
   if (engine == engines::Engine::impl) {
     parts = read_all_compact(o.files);
-    compact = is::product_with_tuples(pointers(parts), o.files, o.budgets.memory_bytes);
+    WorkBudget work = o.budgets.work();
+    compact = is::product_with_tuples(pointers(parts), o.files, work,
+                                      fsm_peaks::product_command(parts.size(), fsm_peaks::bytes_of(parts)));
     is::write_fsm_compact_file(o.out, compact.fsm, is::name_speller(compact.fsm, &compact.names));
     states = compact.fsm.state_count();
     transitions = compact.fsm.edge_count();
     // A product holds only accessible states: nonblocking is coaccessibility of them all.
     nonblocking = [&] { return is::every_state_coaccessible(compact.fsm); };
+    report_memory(o.budgets, work.peak_estimate());
   } else {
     p = engines::product(read_all(o.files), o.files, engine, o.budgets.memory_bytes);
     sv::write_fsm_file(o.out, p);
@@ -211,17 +215,25 @@ auto naming_files(const FsmOptions& o, F&& f) {
 
 SynthFacts synth_compact(const FsmOptions& o) {
   const auto [plants, specs] = split_plants_specs(read_all_compact(plants_then_specs(o)), o.plants.size());
-  const is::Fsm plant = is::product(pointers(plants), o.plants, o.budgets.memory_bytes);
-  const is::Fsm spec = is::product(pointers(specs), o.specs, o.budgets.memory_bytes);
+  WorkBudget work = o.budgets.work();
+  const double inputs = fsm_peaks::bytes_of(plants) + fsm_peaks::bytes_of(specs);
+  const is::Fsm plant = is::product(pointers(plants), o.plants, work, fsm_peaks::product_command(plants.size(), inputs, true));
+  const is::Fsm spec = is::product(pointers(specs), o.specs, work, fsm_peaks::product_command(specs.size(), inputs, true));
+  const double held = fsm_peaks::bytes_of(plant) + fsm_peaks::bytes_of(spec) + inputs;
   const std::vector<std::string> unobservable = unobservable_of(plant, spec);
   if (!unobservable.empty()) {
-    const is::Fsm sup = naming_files(o, [&] { return is::supcon_normal(plant, spec, o.budgets.memory_bytes); });
+    const is::Fsm sup = naming_files(o, [&] {
+      return is::supcon_normal(plant, spec, work, fsm_peaks::normal_synth_command(held, plant.event_count() + spec.event_count()));
+    });
     is::write_fsm_compact_file(o.out, sup, is::name_speller(sup));
+    const bool controllable = naming_files(o, [&] { return is::is_controllable(plant, spec, work, fsm_peaks::synth_command(held)); });
+    report_memory(o.budgets, work.peak_estimate());
     return {plant.state_count(), spec.state_count(), sup.state_count(), sup.edge_count(),
-            count_set(sup.marked), is::is_controllable(plant, spec), unobservable};
+            count_set(sup.marked), controllable, unobservable};
   }
-  const is::Synthesis sup = is::synthesize(plant, spec, o.budgets.memory_bytes);
+  const is::Synthesis sup = naming_files(o, [&] { return is::synthesize(plant, spec, work, fsm_peaks::synth_command(held)); });
   is::write_fsm_compact_file(o.out, sup.supervisor, is::name_speller(sup.supervisor, &sup.names));
+  report_memory(o.budgets, work.peak_estimate());
   return {plant.state_count(), spec.state_count(), sup.supervisor.state_count(),
           sup.supervisor.edge_count(), count_set(sup.supervisor.marked), sup.spec_controllable, {}};
 }
@@ -300,8 +312,20 @@ int run_compare(const FsmOptions& o) {
     const is::Fsm b = is::read_fsm_compact_file(o.files[1]);
     a_states = a.state_count();
     b_states = b.state_count();
-    ab = is::language_inclusion(a, b);
-    ba = is::language_inclusion(b, a);
+    // Up to |A| x (|B| + 1) pairs each way: budgeted, one way at a time.
+    WorkBudget work = o.budgets.work();
+    const auto peak = fsm_peaks::compare_pairs(fsm_peaks::bytes_of(a) + fsm_peaks::bytes_of(b));
+    const std::string both = o.files[0] + ", " + o.files[1];
+    const auto naming = [&](auto&& f) {
+      try {
+        return f();
+      } catch (const BudgetExceeded& e) {
+        throw BudgetExceeded(both, std::string(e.what()).substr(e.where().size() + 2));
+      }
+    };
+    ab = naming([&] { return is::language_inclusion(a, b, work, peak); });
+    ba = naming([&] { return is::language_inclusion(b, a, work, peak); });
+    report_memory(o.budgets, work.peak_estimate());
   } else {
     const Automaton a = sv::read_fsm_file(o.files[0]);
     const Automaton b = sv::read_fsm_file(o.files[1]);
@@ -371,6 +395,7 @@ void add_fsm_verb(CLI::App& app, int& exit_code) {
   prod->add_flag("--json", o->json, "print a JSON summary");
   add_engine(prod, *o);
   add_budget_options(prod, o->budgets, false);
+  add_time_limit_option(prod, o->budgets);
   wire(prod, run_product);
 
   auto* synth = fsm->add_subcommand(
@@ -382,6 +407,7 @@ void add_fsm_verb(CLI::App& app, int& exit_code) {
   synth->add_flag("--json", o->json, "print a JSON summary");
   add_engine(synth, *o);
   add_budget_options(synth, o->budgets, false);
+  add_time_limit_option(synth, o->budgets);
   wire(synth, run_synth);
 
   auto* exp = fsm->add_subcommand("export", "write an automaton as DOT, JSON, canonical .fsm or SVG");
@@ -395,6 +421,8 @@ void add_fsm_verb(CLI::App& app, int& exit_code) {
   cmp->add_option("files", o->files, "A.fsm B.fsm")->required()->expected(2);
   cmp->add_flag("--json", o->json, "print JSON");
   add_engine(cmp, *o);
+  add_budget_options(cmp, o->budgets, false);
+  add_time_limit_option(cmp, o->budgets);
   wire(cmp, run_compare);
 
   add_fsm_control_subcommands(fsm, exit_code);

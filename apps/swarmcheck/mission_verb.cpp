@@ -10,6 +10,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <optional>
@@ -106,6 +107,20 @@ double time_in(const sm::RunResult& r, const std::string& name, sm::Activity a) 
   return s;
 }
 
+// What `mission run` needs at its peak: the process, the world's grids (a byte a cell for the
+// world and each robot's map), and the paths the picture keeps, two doubles a point in vectors
+// that double as they grow. A path keeps a point a step, but only when the robot has moved 2 cm
+// since the last: at most min(steps, fastest speed x time / 2 cm) points a robot (the unicycle
+// body's servos saturate at r K = 0.17 m/s). Before, every step was counted: 1e9 steps of a run
+// that moves a few metres were refused at 32 GB.
+double mission_run_peak(const swarmcheck::mission::Mission& m, const RunOptions& o, double steps) {
+  const double robots = static_cast<double>(m.robots.size());
+  const double fastest = o.body == "kinematic" ? std::abs(o.speed) : 0.2;
+  const double points = std::min(steps + 1.0, fastest * o.max_time / 0.02 + 2.0);
+  const double world = m.world ? static_cast<double>(m.world->rows * m.world->cols) * (robots + 2.0) : 0.0;
+  return kProcessBytes + world + robots * 16.0 * grown_elements(points);
+}
+
 int run_run(const RunOptions& o) {
   const std::vector<std::string> inputs = sm::mission_input_files(o.file);   // the mission and its .fsm
   impl::io::refuse_output_that_is_an_input(o.trace, inputs);
@@ -125,8 +140,8 @@ int run_run(const RunOptions& o) {
   if (!o.trace.empty())
     require_within("--trace " + o.trace, "the trace of " + run_size, steps * (60.0 + 40.0 * robots),
                    o.budgets.trace_bytes, "--max-trace-bytes");
-  require_within(o.file, "the run's paths over " + run_size, steps * 16.0 * robots, o.budgets.memory_bytes,
-                 "--memory-limit");
+  const double estimate = mission_run_peak(m, o, steps);
+  require_within(o.file, "the run's paths over " + run_size, estimate, o.budgets.memory_bytes, "--memory-limit");
   sm::RunOptions ro;
   if (o.body == "kinematic") ro.body = sm::BodyModel::kinematic;
   ro.dt_s = o.dt;
@@ -146,6 +161,7 @@ int run_run(const RunOptions& o) {
   }
   if (trace) trace->commit();
   if (svg) svg->commit();
+  report_memory(o.budgets, estimate);
   std::vector<std::string> events;
   for (const auto& e : r.events) events.push_back(e.event);
   if (o.json) {

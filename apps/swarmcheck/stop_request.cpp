@@ -4,6 +4,8 @@
 
 #include <cstring>
 
+#include "impl/io/interrupt.hpp"
+
 namespace swarmcheck::cli {
 namespace {
 
@@ -13,6 +15,13 @@ std::atomic<int> g_signal{0};
 std::atomic<const char*> g_message{nullptr};
 
 extern "C" void on_stop_signal(int sig) {
+  // The second signal does not wait for the tidy stop: temporary files and folders (cosim's
+  // unpacked FMUs) are removed and the process ends now, with the first signal's status.
+  if (g_stop.load()) {
+    const int first = g_signal.load();
+    impl::io::exit_now(128 + (first != 0 ? first : sig),
+                       "swarmcheck: stopped at once (second signal); temporary files removed, outputs left as they were\n");
+  }
   g_signal.store(sig);
   g_stop.store(true);
   if (const char* m = g_message.load()) {
@@ -29,8 +38,10 @@ StopRequest::StopRequest(const char* message) {
   g_message.store(message);
   struct sigaction sa {};
   sa.sa_handler = on_stop_signal;
-  sa.sa_flags = SA_RESETHAND;
+  sa.sa_flags = 0;
   sigemptyset(&sa.sa_mask);
+  sigaddset(&sa.sa_mask, SIGINT);   // one handler at a time
+  sigaddset(&sa.sa_mask, SIGTERM);
   sigaction(SIGINT, &sa, &old_int_);
   sigaction(SIGTERM, &sa, &old_term_);
 }

@@ -2,7 +2,8 @@
 // Ctrl-C (SIGINT) or SIGTERM as a request to stop cleanly, for verbs that must tidy up before they
 // exit (dse keeps its journal; cosim unloads its FMUs and removes their unpacked folders). While a
 // StopRequest lives, the signal sets a flag the verb polls between units of work and prints
-// `message`; the handler resets itself, so a second signal ends the process at once. Outside one,
+// `message`; a second signal ends the process at once, as impl/io/interrupt.hpp's handler does
+// (temporary files and folders removed, status 128 + the first signal). Outside one,
 // impl/io/interrupt.hpp's handler applies (remove temporary files, exit).
 #include <atomic>
 #include <csignal>

@@ -186,8 +186,53 @@ inline std::uint64_t size_option(const std::string& text, const std::string& fla
   }
 }
 
-// --memory-limit (and, for verbs that write traces, --max-trace-bytes) on a verb; the values
-// are read into `b` when the command line is parsed.
+// "30", "30s", "2.5m", "1h": seconds; 0 turns the limit off.
+inline double parse_duration(const std::string& text, const std::string& flag) {
+  const std::string expected = "expected a duration such as 30, 30s, 5m or 2h (0: no limit), got \"" + text + "\"";
+  std::size_t used = 0;
+  double value = 0;
+  try {
+    value = std::stod(text, &used);
+  } catch (const std::exception&) {
+    throw InputError(flag, expected);
+  }
+  const std::string unit = text.substr(used);
+  const double scale = unit.empty() || unit == "s" ? 1 : unit == "m" ? 60 : unit == "h" ? 3600 : -1;
+  if (scale < 0 || !(value >= 0) || !(value * scale <= 1e9)) throw InputError(flag, expected);
+  return value * scale;
+}
+
+// What the process holds before any work (its code, libraries, the heap's start): the resident
+// memory of `swarmcheck fsm check` on a two-state automaton, measured. Every command's memory
+// estimate counts it.
+inline constexpr double kProcessBytes = 15.0 * (1 << 20);
+
+// The mean of n and the next power of two: the bytes a vector grown to n elements by doubling
+// holds at its peak, in elements (its old and new blocks are both resident while it moves).
+inline double grown_elements(double n) {
+  double p = 1;
+  while (p < n) p *= 2;
+  return n <= 0 ? 0 : (n + p) / 2;
+}
+
+// The peak resident memory of this process so far, bytes (getrusage's ru_maxrss is in KiB).
+inline double peak_resident_bytes() {
+  struct rusage u {};
+  ::getrusage(RUSAGE_SELF, &u);
+  return static_cast<double>(u.ru_maxrss) * 1024.0;
+}
+
+// --memory-report: one line on stderr at the end of the work, the budget's estimate of the peak
+// beside the peak measured (what tests/hardening/memory_estimate_test.cpp holds within 1.3x).
+inline void report_memory(const Budgets& b, double estimate_bytes) {
+  if (!b.report) return;
+  std::fprintf(stderr, "swarmcheck: memory: estimated peak %.0f bytes (%s), measured peak resident %.0f bytes (%s)\n",
+               estimate_bytes, format_bytes(estimate_bytes).c_str(), peak_resident_bytes(),
+               format_bytes(peak_resident_bytes()).c_str());
+}
+
+// --memory-limit and --memory-report (and, for verbs that write traces, --max-trace-bytes) on a
+// verb; the values are read into `b` when the command line is parsed.
 inline void add_budget_options(CLI::App* cmd, Budgets& b, bool trace) {
   b.memory_bytes = default_memory_limit();
   cmd->add_option_function<std::string>(
@@ -196,12 +241,31 @@ inline void add_budget_options(CLI::App* cmd, Budgets& b, bool trace) {
          "a lower ulimit -v / cgroup limit, "
          "here " + format_bytes(static_cast<double>(b.memory_bytes)) + "; 0: no limit)")
       ->type_name("SIZE");
+  cmd->add_flag("--memory-report", b.report,
+                "At the end, print on stderr the memory the budget estimated this command needs at its peak, and the peak "
+                "measured");
   if (!trace) return;
   b.trace_bytes = kDefaultMaxTraceBytes;
   cmd->add_option_function<std::string>(
          "--max-trace-bytes", [&b](const std::string& v) { b.trace_bytes = size_option(v, "--max-trace-bytes"); },
          "Refuse a trace estimated to be larger than this (default 8G; 0: no limit)")
       ->type_name("SIZE");
+}
+
+// --time-limit on a verb whose work can grow exponentially or quadratically with its input (a
+// product, an observer, the pairs of an observability check): past it the work stops, exit 2,
+// with how far it got.
+inline void add_time_limit_option(CLI::App* cmd, Budgets& b) {
+  cmd->add_option_function<std::string>(
+         "--time-limit", [&b](const std::string& v) {
+           try {
+             b.time_limit_s = parse_duration(v, "--time-limit");
+           } catch (const InputError& e) {
+             throw CLI::ValidationError(e.what());
+           }
+         },
+         "Stop the work after this long (30, 30s, 5m, 2h), exit 2 with how far it got (default 0: no limit)")
+      ->type_name("DURATION");
 }
 
 }  // namespace swarmcheck::cli

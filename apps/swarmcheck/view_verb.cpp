@@ -87,7 +87,7 @@ void add_view_verb(CLI::App& app, int& exit_code) {
   cmd->add_option("-o,--output", o->out, "The HTML file to write")->required();
   cmd->add_option("--max-records", o->view.max_records, "Longer traces are thinned evenly to this many records")
       ->capture_default_str();
-  cmd->add_option("--mission", o->view.mission_path, "A mission trace's mission file (default: the one its header names)");
+  cmd->add_option("--mission", o->view.mission_path, "A mission trace's mission file (default: the file of the name its header gives, next to the trace)");
   cmd->callback([o, &exit_code] { exit_code = guarded([&] { return run_view(*o); }); });
 }
 

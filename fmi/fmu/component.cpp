@@ -6,6 +6,7 @@
 #include "fmi/fmu/kinds.hpp"
 #include "spec/exploration/scenario.hpp"
 #include "spec/util/hana_json.hpp"
+#include "spec/util/json_text.hpp"
 #include "spec/util/input_error.hpp"
 
 namespace swarmcheck::fmi {
@@ -106,11 +107,22 @@ std::string setup_to_json(const FmuSetup& s) {
 }
 
 FmuSetup setup_from_json(const std::string& text) {
-  const json_io::Json j = json_io::Json::parse(text, nullptr, false);
-  if (j.is_discarded() || !j.is_object() || j.value("format", "") != "swarmcheck-fmu-1")
+  // The JSON reader of every input: depth limit, each key once, unknown keys refused.
+  json_io::Json j;
+  try {
+    j = json_io::parse_json_text(text, "resources/swarmcheck-fmu.json");
+  } catch (const InputError& e) {
+    throw FmuError(e.what());
+  }
+  try {
+    json_io::refuse_unknown_keys(j, "", {"format", "kind", "robots", "obstacles", "scenario"});
+  } catch (const InputError& e) {
+    throw FmuError(std::string("resources/swarmcheck-fmu.json: ") + e.what());
+  }
+  if (!j.is_object() || json_io::string_member(j, "format") != "swarmcheck-fmu-1")
     throw FmuError("resources/swarmcheck-fmu.json: not a swarmcheck FMU setup (format swarmcheck-fmu-1 expected)");
   FmuSetup s;
-  const std::string kind = j.value("kind", "");
+  const std::string kind = json_io::string_member(j, "kind");
   if (kind == "environment") s.kind = Kind::environment;
   else if (kind == "controller") s.kind = Kind::controller;
   else if (kind == "body") s.kind = Kind::body;

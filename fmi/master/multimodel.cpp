@@ -211,7 +211,7 @@ CoSimConfig read_config(const std::string& path) {
   if (j.contains("endTime")) c.end_s = number(j["endTime"], "endTime");
   if (j.contains("algorithm")) {
     const Json& a = j["algorithm"];
-    if (!a.is_object() || a.value("type", "") != "fixed-step")
+    if (!a.is_object() || json_io::string_member(a, "type") != "fixed-step")   // any type: a message, not a type_error
       throw InputError(path + ": algorithm.type", "expected \"fixed-step\" (the one algorithm this master runs)");
     if (!a.contains("size")) throw InputError(path + ": algorithm.size", "expected the step size, s");
     c.step_s = number(a["size"], "algorithm.size");

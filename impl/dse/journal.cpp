@@ -8,6 +8,7 @@
 #include <fstream>
 
 #include "spec/util/input_error.hpp"
+#include "spec/util/json_text.hpp"
 
 namespace swarmcheck::dse {
 namespace {
@@ -30,12 +31,14 @@ Journal::Journal(std::string path) : path_(std::move(path)) {
     std::ifstream in(path_, std::ios::binary);
     std::string line;
     while (std::getline(in, line)) {
-      const auto j = json_io::Json::parse(line, nullptr, false);
-      if (j.is_discarded() || !j.is_object()) {
-        ++skipped_;
-        continue;
-      }
+      // A line that is not a point's runs (cut by a crash, or anything else) is skipped; read
+      // with the JSON reader, so a line nested 300 000 deep is one of those, not a crash.
       try {
+        const json_io::Json j = json_io::parse_json_text(line, path_);
+        if (!j.is_object()) {
+          ++skipped_;
+          continue;
+        }
         PointRuns p = point_runs_from_json(j);
         std::string key = p.key;
         entries_.insert_or_assign(std::move(key), std::move(p));

@@ -142,9 +142,9 @@ std::optional<std::string> check_point(const DesignSpace& space, const Genome& g
 }
 
 // The `points_at_once` largest points together must fit (named after the largest).
-void require_points_fit(const DesignSpace& space, std::vector<PointNeed> needs, std::uint64_t memory_limit_bytes,
-                        int32_t points_at_once) {
-  if (needs.empty()) return;
+double require_points_fit(const DesignSpace& space, std::vector<PointNeed> needs, std::uint64_t memory_limit_bytes,
+                          int32_t points_at_once) {
+  if (needs.empty()) return 0;
   const std::size_t k = std::min(needs.size(), static_cast<std::size_t>(std::max(1, points_at_once)));
   std::partial_sort(needs.begin(), needs.begin() + static_cast<std::ptrdiff_t>(k), needs.end(),
                     [](const PointNeed& a, const PointNeed& b) { return a.bytes > b.bytes; });
@@ -157,18 +157,19 @@ void require_points_fit(const DesignSpace& space, std::vector<PointNeed> needs, 
                  fmt::format("design point {}: a {} x {} map with {} robots{}", space.describe(largest.genome),
                              largest.map_size, largest.map_size, largest.robots, at_once),
                  together, memory_limit_bytes, "--memory-limit");
+  return together;
 }
 }  // namespace
 
 std::optional<std::string> point_problem(const DesignSpace& space, const Genome& g) { return check_point(space, g, nullptr); }
 
-void check_design_space(const DesignSpace& space, std::uint64_t memory_limit_bytes, int32_t points_at_once) {
+double check_design_space(const DesignSpace& space, std::uint64_t memory_limit_bytes, int32_t points_at_once) {
   const DseConfig& c = space.config();
   std::vector<PointNeed> needs;
   const auto check = [&](const Genome& g) {
     if (space.violated_parameter_constraint(g) >= 0) return;
     PointNeed need;
-    if (auto problem = check_point(space, g, memory_limit_bytes != 0 ? &need : nullptr)) throw InputError(c.file, *problem);
+    if (auto problem = check_point(space, g, &need)) throw InputError(c.file, *problem);
     if (need.bytes >= 0) needs.push_back(std::move(need));
   };
   if (c.algorithm == Algorithm::exhaustive) {
@@ -182,7 +183,7 @@ void check_design_space(const DesignSpace& space, std::uint64_t memory_limit_byt
         check(g);
       }
   }
-  require_points_fit(space, std::move(needs), memory_limit_bytes, points_at_once);
+  return require_points_fit(space, std::move(needs), memory_limit_bytes, points_at_once);
 }
 
 SweepOutcome run_sweep(const DesignSpace& space, Executor& executor, const SweepOptions& options) {

@@ -71,7 +71,8 @@ struct SweepOutcome {
 // are checked as the search draws them). Throws InputError naming the point. With a memory limit
 // (bytes; 0: none), a point whose runs, `points_at_once` of them in memory together, are
 // estimated to need more is refused (BudgetExceeded, naming the point and the limit's flag).
-void check_design_space(const DesignSpace& space, std::uint64_t memory_limit_bytes = 0, int32_t points_at_once = 1);
+// Returns that estimate (bytes: the largest points that run at once, added up).
+double check_design_space(const DesignSpace& space, std::uint64_t memory_limit_bytes = 0, int32_t points_at_once = 1);
 // The problem of one point (its scenarios, objective columns it cannot offer), or nullopt.
 std::optional<std::string> point_problem(const DesignSpace& space, const Genome& g);
 

@@ -7,8 +7,13 @@
 namespace swarmcheck::impl::supervisor {
 
 swarmcheck::supervisor::ControlReport control_report(const Fsm& plant, const Fsm& sup) {
+  WorkBudget none;
+  return control_report(plant, sup, none, PeakModel{});
+}
+
+swarmcheck::supervisor::ControlReport control_report(const Fsm& plant, const Fsm& sup, WorkBudget& budget, const PeakModel& peak) {
   swarmcheck::supervisor::ControlReport r;
-  const Product loop = product_with_tuples({&plant, &sup}, {"plant", "supervisor"});
+  const Product loop = product_with_tuples({&plant, &sup}, {"plant", "supervisor"}, budget, peak, "plant || supervisor");
   const Fsm& p = loop.fsm;
   r.closed_loop_states = p.state_count();
   const std::vector<EventId> disabled = disabled_uncontrollable(plant, loop);

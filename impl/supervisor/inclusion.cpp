@@ -37,6 +37,11 @@ std::vector<EventId> events_in(const Fsm& a, const Fsm& b) {
 }  // namespace
 
 swarmcheck::supervisor::Inclusion language_inclusion(const Fsm& a, const Fsm& b) {
+  WorkBudget none;
+  return language_inclusion(a, b, none, PeakModel{});
+}
+
+swarmcheck::supervisor::Inclusion language_inclusion(const Fsm& a, const Fsm& b, WorkBudget& budget, const PeakModel& peak) {
   swarmcheck::supervisor::Inclusion out;
   if (a.state_count() == 0) return out;  // L(a) is empty
   const std::vector<EventId> in_b = events_in(a, b);
@@ -53,7 +58,15 @@ swarmcheck::supervisor::Inclusion language_inclusion(const Fsm& a, const Fsm& b)
   };
   visit(0, b.state_count() == 0 ? kNoState : 0, kNoParent, 0);
   // nodes doubles as the FIFO queue: breadth-first order is index order.
+  // The pairs are up to |a| x (|b| + 1): quadratic, so budgeted.
+  const auto check = [&](std::uint32_t at) {
+    budget.check("a, b", peak.at(static_cast<double>(nodes.size()), 0), [&] {
+      return "the comparison stopped after exploring " + std::to_string(at) + " pairs of states (" + std::to_string(nodes.size()) +
+             " found, of up to " + std::to_string(std::uint64_t{a.state_count()} * width) + ")";
+    });
+  };
   for (std::uint32_t at = 0; at < nodes.size() && (out.closed || out.marked); ++at) {
+    if (at % 4096 == 0) check(at);
     const Node n = nodes[at];
     if (n.b == kNoState && out.closed) {
       out.closed = false;
@@ -70,6 +83,7 @@ swarmcheck::supervisor::Inclusion language_inclusion(const Fsm& a, const Fsm& b)
     }
   }
   SWARM_ASSERT(nodes.size() <= std::uint64_t{a.state_count()} * width);
+  budget.note(peak.at(static_cast<double>(nodes.size()), 0));
   return out;
 }
 

@@ -31,24 +31,23 @@ struct ObserverClasses {
   std::vector<std::vector<StateId>> next;
 };
 
-// A memory budget of a construction (0: none), and what its message names.
-struct Limit {
-  std::uint64_t max_bytes = 0;
+// A construction's budget, the model of its command's peak, and what its messages name.
+struct Guard {
+  WorkBudget& budget;
+  PeakModel peak;
   std::string where;
-  // Throws BudgetExceeded once `estimate` passes the limit; `done` says how far it got.
-  void check(double estimate, const std::string& done) const {
-    if (max_bytes == 0 || estimate <= static_cast<double>(max_bytes)) return;
-    throw BudgetExceeded(where, done + ": about " + format_bytes(estimate) + " and growing, over the limit of " +
-                                    format_bytes(static_cast<double>(max_bytes)) +
-                                    " (raise it with --memory-limit, e.g. --memory-limit " + size_flag_value_at_least(2.0 * static_cast<double>(max_bytes)) + ")");
-  }
 };
 
-// The subset construction can be exponential in the states, so it is what a budget guards. The
-// estimate, per class: the index's node and bucket, three vectors (key, list, row of successors)
-// with their heap blocks, so 176 bytes + 4 per event; per member 8 (key and list) and 4 for what
-// is built from the classes afterwards (an observer's state names, H's pairs).
-ObserverClasses observer_classes(const Fsm& f, const Limit& limit) {
+// The legacy models of the byte-limit entry points (the library's named results): per class the
+// index's node and bucket, three vectors (key, list, row of successors) with their heap blocks,
+// so 176 bytes + 4 per event; per member 8 (key and list) and 4 for what is built from the
+// classes afterwards (an observer's state names, H's pairs).
+PeakModel legacy_observer_peak(const Fsm& f) { return PeakModel{0, 176.0 + 4.0 * static_cast<double>(f.event_count()), 12.0}; }
+
+// The subset construction can be exponential in the states, so it is what a budget guards: the
+// model of (classes, members of all classes, the members of the classes not yet explored
+// extrapolated from those explored).
+ObserverClasses observer_classes(const Fsm& f, const Guard& guard) {
   ObserverClasses c;
   if (f.state_count() == 0) return c;
   std::vector<std::uint32_t> stamp(f.state_count(), 0);
@@ -82,10 +81,11 @@ ObserverClasses observer_classes(const Fsm& f, const Limit& limit) {
   double members = 0;
   for (std::size_t k = 0; k < c.sets.size(); ++k) {
     members += static_cast<double>(c.sets[k].size());
-    if (limit.max_bytes != 0 && k % 256 == 0) {
+    if (k % 256 == 0) {
       const double classes = static_cast<double>(c.sets.size());
-      limit.check(classes * (176.0 + 4.0 * static_cast<double>(f.event_count())) + 12.0 * members * classes / static_cast<double>(k + 1),
-                  "the observer stopped after " + std::to_string(k) + " classes (" + std::to_string(c.sets.size()) + " found)");
+      guard.budget.check(guard.where, guard.peak.at(classes, members * classes / static_cast<double>(k + 1)), [&] {
+        return "the observer stopped after " + std::to_string(k) + " classes (" + std::to_string(c.sets.size()) + " found)";
+      });
     }
     for (EventId e = 0; e < f.event_count(); ++e) {
       if (!f.observable[e]) continue;
@@ -103,6 +103,7 @@ ObserverClasses observer_classes(const Fsm& f, const Limit& limit) {
       c.next[k][e] = t;
     }
   }
+  guard.budget.note(guard.peak.at(static_cast<double>(c.sets.size()), members));
   return c;
 }
 
@@ -120,8 +121,13 @@ void refuse_commas(const Fsm& f, const std::string& what, const AppendName& name
 }  // namespace
 
 Fsm observer(const Fsm& f, std::uint64_t max_bytes, const std::string& where) {
+  WorkBudget budget(max_bytes);
+  return observer(f, budget, legacy_observer_peak(f), where);
+}
+
+Fsm observer(const Fsm& f, WorkBudget& budget, const PeakModel& peak, const std::string& where) {
   refuse_commas(f, "observer", name_speller(f));
-  const ObserverClasses c = observer_classes(f, Limit{max_bytes, where});
+  const ObserverClasses c = observer_classes(f, Guard{budget, peak, where});
   Fsm out;
   std::vector<EventId> renumber(f.event_count(), kNoEvent);
   for (EventId e = 0; e < f.event_count(); ++e)
@@ -150,8 +156,14 @@ Fsm observer(const Fsm& f, std::uint64_t max_bytes, const std::string& where) {
 }
 
 swarmcheck::supervisor::ObservabilityReport observability(const Fsm& plant, const Fsm& spec) {
+  WorkBudget none;
+  return observability(plant, spec, none, PeakModel{}, PeakModel{});
+}
+
+swarmcheck::supervisor::ObservabilityReport observability(const Fsm& plant, const Fsm& spec, WorkBudget& budget,
+                                                          const PeakModel& product_peak, const PeakModel& pairs_peak) {
   swarmcheck::supervisor::ObservabilityReport r;
-  const Product loop = product_with_tuples({&plant, &spec}, {"plant", "spec"});
+  const Product loop = product_with_tuples({&plant, &spec}, {"plant", "spec"}, budget, product_peak, "plant || spec");
   const Fsm& a = loop.fsm;
   if (a.state_count() == 0) return r;
   std::vector<EventId> in_a(plant.event_count());
@@ -170,7 +182,16 @@ swarmcheck::supervisor::ObservabilityReport observability(const Fsm& plant, cons
       nodes.push_back({z1, z2, parent, e, sides});
   };
   visit(0, 0, UINT32_MAX, 0, 0);
+  // The pairs of closed-loop states are quadratic in them (1 000 states of a chain: 30 s, 2 GB);
+  // the closed loop itself is held meanwhile.
+  const double held = product_peak.at(static_cast<double>(a.state_count()), static_cast<double>(a.edge_count()));
   for (std::uint32_t i = 0; i < nodes.size(); ++i) {
+    if (i % 4096 == 0)
+      budget.check("plant || spec", held + pairs_peak.at(static_cast<double>(nodes.size()), 0), [&] {
+        return "the observability check stopped after comparing " + std::to_string(i) + " pairs of words' states (" +
+               std::to_string(nodes.size()) + " found, of up to " + std::to_string(std::uint64_t{a.state_count()} * a.state_count()) +
+               "), with no verdict";
+      });
     const Node n = nodes[i];
     const StateId x2 = loop.names.tuple(n.z2)[0];
     for (auto j = plant.first_edge[x2]; j < plant.first_edge[x2 + 1]; ++j) {
@@ -185,6 +206,7 @@ swarmcheck::supervisor::ObservabilityReport observability(const Fsm& plant, cons
         }
         std::reverse(r.word.begin(), r.word.end());
         std::reverse(r.twin.begin(), r.twin.end());
+        budget.note(held + pairs_peak.at(static_cast<double>(nodes.size()), 0));
         return r;
       }
     }
@@ -198,14 +220,33 @@ swarmcheck::supervisor::ObservabilityReport observability(const Fsm& plant, cons
       if (t2 != kNoState) visit(n.z1, t2, i, e, 2);
     }
   }
+  budget.note(held + pairs_peak.at(static_cast<double>(nodes.size()), 0));
   return r;
 }
 
 Fsm supcon_normal(const Fsm& plant, const Fsm& spec, std::uint64_t max_bytes) {
-  const Product loop = product_with_tuples({&plant, &spec}, {"plant", "spec"}, max_bytes);
+  WorkBudget budget(max_bytes);
+  NormalPeaks legacy;
+  legacy.product = PeakModel{0, 208.0, 16.0};
+  legacy.pairs = PeakModel{0, 96.0, 8.0};
+  const std::size_t events = plant.event_count() + spec.event_count();   // at least the closed loop's
+  legacy.observer = PeakModel{0, 176.0 + 4.0 * static_cast<double>(events), 12.0};
+  return supcon_normal(plant, spec, budget, legacy);
+}
+
+Fsm supcon_normal(const Fsm& plant, const Fsm& spec, WorkBudget& budget, const NormalPeaks& peaks) {
+  const Product loop = product_with_tuples({&plant, &spec}, {"plant", "spec"}, budget, peaks.product, "plant || spec");
   const Fsm& a = loop.fsm;
-  const Limit limit{max_bytes, "plant || spec"};
-  const ObserverClasses c = observer_classes(a, limit);
+  // Each stage's estimate adds its own model to what the stages before it came to.
+  double held = peaks.product.at(static_cast<double>(a.state_count()), static_cast<double>(a.edge_count()));
+  PeakModel observer_peak = peaks.observer;
+  observer_peak.fixed += held;
+  const ObserverClasses c = observer_classes(a, Guard{budget, observer_peak, "plant || spec"});
+  {
+    double members = 0;
+    for (const auto& set : c.sets) members += static_cast<double>(set.size());
+    held = observer_peak.at(static_cast<double>(c.sets.size()), members);
+  }
   // H: pairs (z, k), breadth first from (0, 0).
   Fsm h;
   h.event_names = a.event_names;
@@ -228,11 +269,11 @@ Fsm supcon_normal(const Fsm& plant, const Fsm& spec, std::uint64_t max_bytes) {
     visit(0, 0);
     double edge_count = 0;
     for (StateId s = 0; s < origin.size(); ++s) {
-      // Per pair: its origin, marking, edge list and index entry; per edge its event and target.
       if (s % 4096 == 0)
-        limit.check(static_cast<double>(origin.size()) * 96.0 + 8.0 * edge_count,
-                    "normal synthesis stopped after " + std::to_string(s) + " (state, observer class) pairs (" +
-                        std::to_string(origin.size()) + " found)");
+        budget.check("plant || spec", held + peaks.pairs.at(static_cast<double>(origin.size()), edge_count), [&] {
+          return "normal synthesis stopped after " + std::to_string(s) + " (state, observer class) pairs (" +
+                 std::to_string(origin.size()) + " found)";
+        });
       const auto [z, k] = origin[s];
       for (auto i = a.first_edge[z]; i < a.first_edge[z + 1]; ++i) {
         const EventId e = a.edge_event[i];
@@ -241,6 +282,8 @@ Fsm supcon_normal(const Fsm& plant, const Fsm& spec, std::uint64_t max_bytes) {
       }
       edge_count += static_cast<double>(a.first_edge[z + 1] - a.first_edge[z]);
     }
+    held += peaks.pairs.at(static_cast<double>(origin.size()), edge_count);
+    budget.note(held);
   }
   set_edges(h, edges);
   const StateId n = h.state_count();
@@ -265,7 +308,12 @@ Fsm supcon_normal(const Fsm& plant, const Fsm& spec, std::uint64_t max_bytes) {
   const std::vector<EventId> disabled = disabled_uncontrollable(plant, loop);
   const ReverseEdges back = reverse_edges(h);
   std::vector<std::uint8_t> inside(n), seeds(n);
-  for (;;) {
+  // As many passes as observer classes may be needed, each linear in H: the clock is checked.
+  for (int passes = 0;; ++passes) {
+    budget.check("plant || spec", held, [&] {
+      return "normal synthesis stopped after " + std::to_string(passes) + " passes of its fixpoint over " + std::to_string(n) +
+             " (state, observer class) pairs";
+    });
     std::vector<std::uint8_t> good = kept;
     for (StateId s = 0; s < n; ++s) {
       const auto [z, k] = origin[s];

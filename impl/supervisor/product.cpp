@@ -218,6 +218,14 @@ std::string joined(const std::vector<std::string>& names) {
 
 Product product_with_tuples(const std::vector<const Fsm*>& parts,
                             const std::vector<std::string>& names, std::uint64_t max_bytes) {
+  // The library's named product (an Automaton built from it): per state its tuple, name and
+  // flags; per transition its event and target, twice.
+  WorkBudget budget(max_bytes);
+  return product_with_tuples(parts, names, budget, PeakModel{0, 160.0 + 24.0 * static_cast<double>(parts.size()), 16.0});
+}
+
+Product product_with_tuples(const std::vector<const Fsm*>& parts, const std::vector<std::string>& names,
+                            WorkBudget& budget, const PeakModel& peak, const std::string& where) {
   SWARM_DEMAND(!parts.empty());
   SWARM_DEMAND(parts.size() == names.size());
   const std::size_t k = parts.size();
@@ -245,19 +253,15 @@ Product product_with_tuples(const std::vector<const Fsm*>& parts,
   const TupleNames& spelled = table.names(parts);
   std::optional<NameCollisions> collisions;
   if (dotted) collisions.emplace(spelled);
-  // The estimate: per state its tuple (table and origin), name and flags, and what the caller
-  // builds from it (a named Automaton); per transition its event and target, twice.
-  const double state_bytes = 160.0 + 24.0 * static_cast<double>(k);
+  const std::string named = where.empty() ? joined(names) : where;
+  const auto check = [&](StateId z) {
+    budget.check(named, peak.at(static_cast<double>(table.size()), static_cast<double>(out.edge_event.size())), [&] {
+      return "the product stopped after exploring " + std::to_string(z) + " states (" + std::to_string(table.size()) +
+             " found, " + std::to_string(out.edge_event.size()) + " transitions)";
+    });
+  };
   for (StateId z = 0; z < table.size(); ++z) {  // ids are handed out in breadth-first order
-    if (max_bytes != 0 && z % 4096 == 0) {
-      const double estimate = static_cast<double>(table.size()) * state_bytes + 16.0 * static_cast<double>(out.edge_event.size());
-      if (estimate > static_cast<double>(max_bytes))
-        throw BudgetExceeded(joined(names), "the product stopped after exploring " + std::to_string(z) + " states (" +
-                                                std::to_string(table.size()) + " found, " + std::to_string(out.edge_event.size()) +
-                                                " transitions): about " + format_bytes(estimate) + " and growing, over the limit of " +
-                                                format_bytes(static_cast<double>(max_bytes)) +
-                                                " (raise it with --memory-limit, e.g. --memory-limit " + size_flag_value_at_least(2.0 * static_cast<double>(max_bytes)) + ")");
-    }
+    if (z % 4096 == 0) check(z);
     std::copy(table.tuple(z), table.tuple(z) + k, cur.begin());
     bool marked = true;
     for (std::size_t p = 0; p < k; ++p) marked = marked && parts[p]->marked[cur[p]];
@@ -275,6 +279,7 @@ Product product_with_tuples(const std::vector<const Fsm*>& parts,
     }
     out.first_edge.push_back(static_cast<std::uint32_t>(out.edge_event.size()));
   }
+  budget.note(peak.at(static_cast<double>(table.size()), static_cast<double>(out.edge_event.size())));   // what it came to
   result.names.tuples = table.release_tuples();
   return result;
 }
@@ -282,6 +287,13 @@ Product product_with_tuples(const std::vector<const Fsm*>& parts,
 Fsm product(const std::vector<const Fsm*>& parts, const std::vector<std::string>& names,
             std::uint64_t max_bytes) {
   Product p = product_with_tuples(parts, names, max_bytes);
+  store_names(p.fsm, p.names);
+  return std::move(p.fsm);
+}
+
+Fsm product(const std::vector<const Fsm*>& parts, const std::vector<std::string>& names, WorkBudget& budget,
+            const PeakModel& peak) {
+  Product p = product_with_tuples(parts, names, budget, peak);
   store_names(p.fsm, p.names);
   return std::move(p.fsm);
 }

@@ -17,9 +17,9 @@ struct Prepared {
   std::vector<std::uint8_t> bad;           // [states of p]: spec disables what plant must do
 };
 
-Prepared prepare(const Fsm& plant, const Fsm& spec, std::uint64_t max_bytes) {
+Prepared prepare(const Fsm& plant, const Fsm& spec, WorkBudget& budget, const PeakModel& peak) {
   Prepared s;
-  s.product = product_with_tuples({&plant, &spec}, {"plant", "spec"}, max_bytes);
+  s.product = product_with_tuples({&plant, &spec}, {"plant", "spec"}, budget, peak);
   const Fsm& p = s.product.fsm;
   s.unc_plant.assign(p.event_count(), 0);
   for (EventId e = 0; e < plant.event_count(); ++e)
@@ -53,10 +53,22 @@ std::vector<EventId> disabled_uncontrollable(const Fsm& plant, const Product& pr
   return out;
 }
 
-bool is_controllable(const Fsm& plant, const Fsm& spec) { return none_bad(prepare(plant, spec, 0)); }
+bool is_controllable(const Fsm& plant, const Fsm& spec) {
+  WorkBudget none;
+  return is_controllable(plant, spec, none, PeakModel{});
+}
+
+bool is_controllable(const Fsm& plant, const Fsm& spec, WorkBudget& budget, const PeakModel& peak) {
+  return none_bad(prepare(plant, spec, budget, peak));
+}
 
 Synthesis synthesize(const Fsm& plant, const Fsm& spec, std::uint64_t max_bytes) {
-  Prepared s = prepare(plant, spec, max_bytes);
+  WorkBudget budget(max_bytes);
+  return synthesize(plant, spec, budget, PeakModel{0, 208.0, 16.0});
+}
+
+Synthesis synthesize(const Fsm& plant, const Fsm& spec, WorkBudget& budget, const PeakModel& peak) {
+  Prepared s = prepare(plant, spec, budget, peak);
   const Fsm& p = s.product.fsm;
   const StateId n = p.state_count();
   std::vector<std::uint8_t> kept(n, 1);
@@ -70,7 +82,14 @@ Synthesis synthesize(const Fsm& plant, const Fsm& spec, std::uint64_t max_bytes)
     };
     for (StateId z = 0; z < n; ++z)
       if (s.bad[z]) remove(z);
-    for (;;) {
+    // A pass is linear in the product, and there may be as many passes as states: the time limit
+    // is checked between them.
+    int passes = 0;
+    for (;; ++passes) {
+      budget.check("plant || spec", peak.at(static_cast<double>(n), static_cast<double>(p.edge_count())), [&] {
+        return "synthesis stopped after " + std::to_string(passes) + " passes of its fixpoint over plant || spec (" +
+               std::to_string(n) + " states)";
+      });
       while (!work.empty()) {  // removal closes over uncontrollable predecessors
         const StateId z = work.back();
         work.pop_back();

@@ -13,6 +13,8 @@
 #include <stdexcept>
 #include <system_error>
 
+#include "spec/util/json_text.hpp"
+
 namespace swarmcheck::proofs {
 namespace {
 
@@ -167,7 +169,7 @@ ObligationReport run_isolated(const Obligation& o, double timeout_s, unsigned qu
     return r;
   }
   try {
-    from_json(Json::parse(text), r);
+    from_json(Json(json_io::parse_json_text(text, "the prover's report")), r);
   } catch (const std::exception& e) {
     r.result = Verdict::unknown;
     r.detail = std::string("unreadable report from the prover: ") + e.what();

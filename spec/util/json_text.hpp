@@ -1,8 +1,16 @@
 #pragma once
-// Parsing a JSON document a user wrote: a syntax error becomes an InputError at file:line:col
-// with nlohmann's reason, and errors found later at a JSON path get the file name in front.
+// THE JSON reader: every JSON text swarmcheck reads (files, trace lines, journal lines, request
+// bodies, FMU resources, messages between MPI ranks, the prover's report) goes through
+// parse_json_text, so every input gets the same guarantees: nesting past kMaxJsonDepth refused
+// before anything recurses over it, a key at most once per object, a NUL byte and a number no
+// double holds refused, and every error an InputError at file:line:col. Keys a reader does not
+// know are refused by from_json (hana records) or refuse_unknown_keys (hand-read objects).
+// scripts/check-json-reader (ctest json_reader_check) fails when a source outside this file,
+// json_structure.hpp and json_pair_lists.hpp calls nlohmann's parser itself.
 #include <cstdint>
+#include <initializer_list>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -129,6 +137,23 @@ inline Json parse_json_text(const std::string& text, const std::string& file, in
     const std::size_t at = literal.empty() ? std::string::npos : text.find(literal);
     throw InputError(at == std::string::npos ? file : text_position(text, at + 1, file, first_line),
                      "a number outside the range of a double" + (literal.empty() ? std::string() : " (" + literal + ")"));
+  }
+}
+
+// A member of object `j` (at JSON path `path`) whose key is not in `known` is an InputError that
+// names it and lists the keys there may be; `j` not an object is the caller's to report.
+inline void refuse_unknown_keys(const Json& j, const std::string& path, std::initializer_list<std::string_view> known) {
+  if (!j.is_object()) return;
+  for (auto it = j.begin(); it != j.end(); ++it) {
+    bool found = false;
+    for (const std::string_view k : known) found = found || it.key() == k;
+    if (found) continue;
+    std::string keys;
+    for (const std::string_view k : known) {
+      keys += keys.empty() ? "" : ", ";
+      keys += k;
+    }
+    throw InputError(join_key(path, it.key()), "unknown key (expected one of: " + keys + ")");
   }
 }
 

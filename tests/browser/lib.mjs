@@ -23,7 +23,7 @@ export const CHROMIUM = process.env.SWARMCHECK_CHROMIUM || '/usr/bin/chromium';
 const FLAGS = ['--headless', '--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run',
   '--disable-background-networking', '--disable-component-update', '--disable-sync'];
 
-export async function launch() {
+export async function launch(extraArgs = []) {
   if (!existsSync(CHROMIUM)) {
     console.log(`SKIP: ${CHROMIUM} is not installed (scripts/install-deps installs Debian's chromium)`);
     process.exit(SKIP);
@@ -36,7 +36,7 @@ export async function launch() {
     process.exit(SKIP);
   }
   const profile = mkdtempSync(join(tmpdir(), 'swarmcheck-chromium-'));
-  return chromium.launchPersistentContext(profile, { executablePath: CHROMIUM, headless: true, args: FLAGS, viewport: { width: 1280, height: 900 } });
+  return chromium.launchPersistentContext(profile, { executablePath: CHROMIUM, headless: true, args: [...FLAGS, ...extraArgs], viewport: { width: 1280, height: 900 } });
 }
 
 export function scratch(name) {

@@ -26,34 +26,38 @@ const base = `http://127.0.0.1:${port}`;
 check(port > 0, `serve listens on 127.0.0.1:${port}`);
 const exited = new Promise((resolve) => server.on('exit', (code, sig) => resolve({ code, sig })));
 
+// API bodies are JSON, declared so (a page of another origin cannot send that without a preflight).
+const post = (path, body, type = 'application/json') => fetch(`${base}${path}`, { method: 'POST', headers: { 'Content-Type': type }, body });
+
 try {
   // ---- requests checked like files ----
   const badScenario = { map_size: 4, robots: [[0.5, 0.5], [0.7, 0.2]] };
   const file = join(dir, 'bad.json');
   writeFileSync(file, JSON.stringify(badScenario));
   const cli = swarmcheck(bin, ['run', file]).err.trim().replace(file, 'request body');
-  let r = await fetch(`${base}/api/runs`, { method: 'POST', body: JSON.stringify(badScenario) });
+  let r = await post('/api/runs', JSON.stringify(badScenario));
   check(r.status === 400 && (await r.text()).trim() === cli, `a bad scenario: 400 with the CLI's message (${cli})`);
-  r = await fetch(`${base}/api/validate`, { method: 'POST', body: '{"map_size": 4, "robots": [[0.5, 0.5]], "rule": "greedy"}' });
+  r = await post('/api/validate', '{"map_size": 4, "robots": [[0.5, 0.5]], "rule": "greedy"}');
   check(r.status === 400 && (await r.text()).includes('request body: rule: expected one of thesis|deterministic|stochastic, got "greedy"'), 'validate: 400 with the message');
-  r = await fetch(`${base}/api/validate`, { method: 'POST', body: '{"map_size": 4, "robots": [[0.5, 0.5]]}' });
+  r = await post('/api/validate', '{"map_size": 4, "robots": [[0.5, 0.5]]}');
   check(r.status === 200, 'validate: a good scenario is 200');
-  r = await fetch(`${base}/api/runs`, { method: 'POST', body: JSON.stringify({ map_size: 4096, robots: [[0.5, 0.5]] }) });
+  r = await post('/api/runs', JSON.stringify({ map_size: 4096, robots: [[0.5, 0.5]] }));
   check(r.status === 400 && (await r.text()).includes('map_size: expected at most 512 for a live run'), 'a map too big for a live run: 400');
-  r = await fetch(`${base}/api/runs`, { method: 'POST', body: 'x'.repeat(2 << 20) });
+  r = await post('/api/runs', 'x'.repeat(2 << 20));
   check(r.status === 413, `a 2 MiB body: 413 (${r.status})`);
   r = await fetch(`${base}/api/runs/0123456789abcdef/events`);
   check(r.status === 404, 'an unknown run: 404');
-  r = await fetch(`${base}/api/runs/0123456789abcdef/control`, { method: 'POST', body: '{' });
+  r = await post('/api/runs/0123456789abcdef/control', '{');
   check(r.status === 404, 'control of an unknown run: 404');
   r = await fetch(`${base}/no/such/page`);
   check(r.status === 404 && (await r.text()).includes('no route GET /no/such/page (the routes: GET /,'), 'an unknown path: 404 naming it and the routes');
-  r = await fetch(`${base}/api/validate`, { method: 'PUT', body: '{}' });
+  r = await fetch(`${base}/api/validate`, { method: 'PUT', headers: { 'Content-Type': 'application/json' }, body: '{}' });
   check(r.status === 405 && (await r.text()).includes('no route PUT /api/validate'), 'a method a route does not take: 405');
-  r = await fetch(`${base}/api/validate`, { method: 'POST', headers: { 'Content-Type': 'application/x-www-form-urlencoded' },
-                                             body: ' '.repeat(9000) + '{"map_size": 4, "robots": [[0.5, 0.5]]}' });
-  check(r.status === 413 && (await r.text()).includes("send it as JSON or text (curl -H 'Content-Type: application/json')"),
-        'a form body over the HTTP library\'s 8 KiB: 413 saying how to send it');
+  r = await post('/api/validate', ' '.repeat(9000) + '{"map_size": 4, "robots": [[0.5, 0.5]]}', 'application/x-www-form-urlencoded');
+  check(r.status === 415 && (await r.text()).includes("expected Content-Type: application/json, got application/x-www-form-urlencoded (curl: -H 'Content-Type: application/json'"),
+        'a body sent as a form: 415 saying how to send it');
+  r = await post('/api/runs', '{"map_size": 4, "robots": [[0.5, 0.5]]}', 'text/plain');
+  check(r.status === 415, `a scenario sent as text/plain: 415 (${r.status})`);
   for (const garbage of ['\x00\x01\x02 garbage\r\n\r\n', 'GET /' + 'a'.repeat(70000) + ' HTTP/1.1\r\n\r\n', 'POST /api/runs HTTP/1.1\r\nContent-Length: 99999999999999999999\r\n\r\n{', 'GET / HTTP/1.1\r\nHost']) {
     await new Promise((resolve) => {
       const s = net.connect(port, '127.0.0.1', () => { s.end(garbage); });
@@ -63,8 +67,10 @@ try {
   }
   r = await fetch(`${base}/`);
   check(r.status === 200 && (await r.text()).includes('swarmcheck-data'), 'after malformed requests the server still serves the page');
-  r = await fetch(`${base}/api/view`, { method: 'POST', body: '{"format": "swarmcheck-trace", "system": "handshake", "robots": 1}\n{"step": 0}\n' });
-  check(r.status === 400 && (await r.text()).includes('request body:2: expected a step'), 'a malformed proof trace posted to /api/view: 400 naming the line');
+  r = await post('/api/view', JSON.stringify({ name: 'p.jsonl', text: '{"format": "swarmcheck-trace", "system": "handshake", "robots": 1}\n{"step": 0}\n' }));
+  check(r.status === 400 && (await r.text()).includes('p.jsonl:2: expected a step'), 'a malformed proof trace posted to /api/view: 400 naming the file and line');
+  r = await post('/api/view', '{"format": "swarmcheck-trace"}\n');
+  check(r.status === 400 && (await r.text()).includes('request body: format: unknown key (expected one of: name, text)'), '/api/view wants {name, text}');
 
   // ---- two pages run at once until completion ----
   const ctx = await launch();
@@ -126,7 +132,7 @@ try {
   let gone = false;
   for (let k = 0; k < 50 && !gone; ++k) {
     await new Promise((res) => setTimeout(res, 100));
-    const c = await fetch(`${base}/api/runs/${id}/control`, { method: 'POST', body: '{"paused": false}' });
+    const c = await post(`/api/runs/${id}/control`, '{"paused": false}');
     gone = c.status === 404;
   }
   check(gone, 'the run stops when its page closes');

@@ -104,7 +104,7 @@ TEST(ViewsCli, AMissionTraceThatIsNotARunOfItsMissionIsStatus2AtTheLine) {
   buffer << std::ifstream(trace).rdbuf();
   const std::string good = buffer.str();
   const std::string out = (d / "m.html").string();
-  ASSERT_EQ(run_binary(kBin, "view " + trace + " -o " + out).status, 0);
+  ASSERT_EQ(run_binary(kBin, "view " + trace + " --mission " + kSource + "/scenarios/thesis/thesis-mission.json -o " + out).status, 0);
   // Line 3 of the thesis mission's trace: {"type":"event","t":0.0,"event":"b8e","robot":"B","kind":"uc","state":"s4"}
   const auto edited = [&](const std::string& from, const std::string& to) {
     std::string text = good;
@@ -190,4 +190,36 @@ TEST(ViewsCli, ADseFolderWithBrokenResultsOrAReportThatIsNotDsesIsStatus2NamingT
   write(dse / "results.json", results);
   write(dse / "report.html", "<html>something else</html>");
   refused((dse / "report.html").string() + ": expected the report `swarmcheck dse` writes");
+}
+
+// `view` opens no file that the command line did not name (issue 38): a mission trace's header
+// names its mission, and view used to open that path as written (and echo its first byte in the
+// error when it was not a mission). Now only the file of that name next to the trace is looked
+// up, or the one --mission gives.
+TEST(ViewsCli, AMissionTraceHeaderNamingAFileElsewhereDoesNotMakeViewOpenIt) {
+  const fs::path d = scratch() / "mission-path";
+  fs::create_directories(d / "elsewhere");
+  fs::create_directories(d / "traces");
+  const std::string secret = write(d / "elsewhere" / "secret.json", "Zsecret text that view must never read\n");
+  const std::string mission = kSource + "/scenarios/thesis/thesis-mission.json";
+  const std::string trace = (d / "traces" / "m.jsonl").string();
+  ASSERT_EQ(run_binary(kBin, "mission run " + mission + " --body kinematic --trace " + trace).status, 0);
+  std::stringstream buffer;
+  buffer << std::ifstream(trace).rdbuf();
+  std::string text = buffer.str();
+  const std::string named = "\"mission\":\"" + mission + "\"";
+  ASSERT_NE(text.find(named), std::string::npos) << text.substr(0, 300);
+  text.replace(text.find(named), named.size(), "\"mission\":\"" + secret + "\"");
+  write(trace, text);
+  const auto r = run_binary(kBin, "view " + trace + " -o " + (d / "v.html").string());
+  EXPECT_EQ(r.status, 2) << r.out;
+  EXPECT_NE(r.out.find("is looked up next to the trace, as " + (d / "traces" / "secret.json").string()), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("'Z'"), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("secret text"), std::string::npos) << r.out;
+  EXPECT_FALSE(fs::exists(d / "v.html"));
+  // The header's name next to the trace is the mission, and --mission names any file.
+  fs::copy_file(mission, d / "traces" / "secret.json");
+  fs::copy_file(kSource + "/scenarios/thesis/control2.fsm", d / "traces" / "control2.fsm");
+  EXPECT_EQ(run_binary(kBin, "view " + trace + " -o " + (d / "v.html").string()).status, 0);
+  EXPECT_EQ(run_binary(kBin, "view " + trace + " --mission " + mission + " -o " + (d / "w.html").string()).status, 0);
 }

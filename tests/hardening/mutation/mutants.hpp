@@ -255,9 +255,10 @@ inline Mutant json_mutant(Rng& rng, const std::string& op, const std::string& te
       return m;
     }
     Mutant m = truncation(rng, text, text.size());
-    // Cut inside a line: the last record is not JSON. Cut between lines: a shorter trace.
+    // Cut inside a line: the last record is not JSON. Cut between lines: a shorter trace; so is a
+    // cut that drops only a line's newline (every reader takes a last line without one).
     const std::size_t cut = m.text.size();
-    m.bad = cut == 0 || text[cut - 1] != '\n';
+    m.bad = cut == 0 || (text[cut - 1] != '\n' && (cut >= text.size() || text[cut] != '\n'));
     return m;
   }
   if (op == "delete_line") {
