@@ -14,7 +14,8 @@
 //   crowds:        a few tight crowds on an empty map: sparse overall (the parallel path's band
 //                  schedule) but chains of robots within reach of each other, in any index order,
 //                  often across the strips' edges; always on the parallel path
-//   corridors:     robots packed into horizontal corridors between walls with a few gaps, dense
+//   corridors:     robots packed into horizontal corridors between walls (half the cases all
+//                  closed, else with a few gaps), dense
 //                  enough for the strip schedule: most steps keep every robot on its row (the
 //                  schedule reuses its lists), some move one robot across a gap or within a
 //                  corridor, some exchange rows (the lists must be built again); parallel path
