@@ -44,6 +44,7 @@ int conform_automata(const SystemCampaign& c, Json* json_out) {
   o.seed = conformance::derive_seed(c.seed, "automata");
   o.out_dir = c.out_dir;
   o.on_case = progress_of(c, "automata");
+  o.quiet_limit = c.quiet_limit;
   const cs::CampaignReport r = cs::run_campaign(o);
   clear_progress(c);
   const auto& v = r.coverage;
@@ -90,6 +91,7 @@ int conform_missions(const SystemCampaign& c, Json* json_out) {
   o.seed = conformance::derive_seed(c.seed, "missions");
   o.out_dir = c.out_dir;
   o.on_case = progress_of(c, "missions");
+  o.quiet_limit = c.quiet_limit;
   const cm::CampaignReport r = cm::run_campaign(o);
   clear_progress(c);
   const auto& v = r.coverage;
@@ -97,7 +99,8 @@ int conform_missions(const SystemCampaign& c, Json* json_out) {
                       {"query_streams", v.query_streams},   {"stream_queries", v.stream_queries},
                       {"repeated_queries", v.repeated_queries}, {"plans_found", v.plans_found},
                       {"plans_absent", v.plans_absent}, {"runs_with_yields", v.runs_with_yields},
-                      {"runs_with_steering", v.runs_with_steering}};
+                      {"runs_with_steering", v.runs_with_steering}, {"runs_with_bumps", v.runs_with_bumps},
+                      {"runs_rerouted_on_sensing", v.runs_rerouted_on_sensing}};
   if (c.json) {
     Json j{{"agree", !r.counterexample}, {"cases_run", r.cases_run}, {"seed", c.seed}, {"campaign_seed", o.seed}};
     if (c.stats) j["coverage"] = coverage;
@@ -126,6 +129,7 @@ int conform_missions(const SystemCampaign& c, Json* json_out) {
                v.stream_queries, v.repeated_queries);
     fmt::print("  plans found / no plan             {:>6} / {}\n", v.plans_found, v.plans_absent);
     fmt::print("  runs with a yield / a steering    {:>6} / {}\n", v.runs_with_yields, v.runs_with_steering);
+    fmt::print("  runs with a bump / a sensed cell  {:>6} / {}\n", v.runs_with_bumps, v.runs_rerouted_on_sensing);
   }
   return r.counterexample ? 1 : 0;
 }

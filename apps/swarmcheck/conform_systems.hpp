@@ -1,6 +1,7 @@
 #pragma once
 // The automata and mission campaigns of `swarmcheck conform` (the exploration campaign, which MPI
 // can split across ranks, is in conform_verb.cpp): run one, print its report as text or JSON.
+#include <chrono>
 #include <cstdint>
 #include <string>
 
@@ -15,6 +16,7 @@ struct SystemCampaign {
   bool json = false;
   bool stats = false;
   bool progress = false;  // on a terminal: case counts on stderr
+  std::chrono::milliseconds quiet_limit{std::chrono::seconds(60)};   // --case-time-limit
 };
 
 // Each returns 0 (agree) or 1 (a counterexample, written and described); with json, the report

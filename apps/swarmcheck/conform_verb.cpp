@@ -34,6 +34,7 @@ namespace fs = std::filesystem;
 
 struct ConformArgs {
   ConformOptions options;
+  double case_time_limit_s = 60;   // --case-time-limit
   std::string system = "all";   // all | exploration | automata | missions
   bool cases_given = false;     // --cases on the command line: every system's budget
   bool json = false;
@@ -51,7 +52,10 @@ Json coverage_json(const Coverage& c) {
               {"negative_zero_starts", c.negative_zero_starts},
               {"off_centre_starts", c.off_centre_starts},
               {"heading_near_pi_cases", c.heading_near_pi_cases},
-              {"completed_cases", c.completed_cases}};
+              {"completed_cases", c.completed_cases},
+              {"grouped_steps_rows_kept", c.grouped_steps_rows_kept},
+              {"grouped_steps_one_row_changed", c.grouped_steps_one_row_changed},
+              {"grouped_steps_rows_exchanged", c.grouped_steps_rows_exchanged}};
 }
 
 void print_coverage(const Coverage& c) {
@@ -67,6 +71,9 @@ void print_coverage(const Coverage& c) {
   fmt::print("  robots starting off centre       {:>6} cases\n", c.off_centre_starts);
   fmt::print("  headings within 0.05 of +-pi     {:>6} cases\n", c.heading_near_pi_cases);
   fmt::print("  completed (completion compared)  {:>6} cases\n", c.completed_cases);
+  fmt::print("  parallel steps, rows all kept    {:>6}\n", c.grouped_steps_rows_kept);
+  fmt::print("  parallel steps, one row changed  {:>6}\n", c.grouped_steps_one_row_changed);
+  fmt::print("  parallel steps, rows exchanged   {:>6}\n", c.grouped_steps_rows_exchanged);
 }
 
 Json case_summary(const ExplorationCase& c) {
@@ -155,6 +162,7 @@ int report(const ConformArgs& a, const ConformReport& r, const Json& ranks, Json
       j["counterexample"] = {{"trace", cx->trace_path}, {"step", cx->divergence.step},
                              {"path", cx->divergence.path}, {"text", cx->divergence.describe()},
                              {"shrinks", cx->shrinks}, {"case", case_summary(cx->minimal)}};
+    if (cx && !cx->divergence.abnormal_end.empty()) j["counterexample"]["abnormal_end"] = cx->divergence.abnormal_end;
     if (json_out)
       *json_out = j;
     else
@@ -234,8 +242,11 @@ std::optional<InputError> counterexample_folder_problem(const std::string& dir, 
 
 // Every system asked for, each with its own campaign from the one seed; under mpirun only the
 // exploration campaign is split, rank 0 runs the others. Exit 1 if any finds a difference.
-int conform(const ConformArgs& a) {
+int conform(ConformArgs a) {
   if (a.options.cases < 1) throw InputError("--cases", "expected an integer >= 1");
+  if (!(a.case_time_limit_s >= 0.001 && a.case_time_limit_s <= 86400))
+    throw InputError("--case-time-limit", "expected seconds, at least 0.001 and at most 86400");
+  a.options.quiet_limit = std::chrono::milliseconds(static_cast<int64_t>(a.case_time_limit_s * 1000));
   const std::vector<std::string> systems =
       a.system == "all" ? std::vector<std::string>{"exploration", "automata", "missions"} : std::vector<std::string>{a.system};
   const mpi::Launch launch = mpi::launch_from_environment();
@@ -255,7 +266,7 @@ int conform(const ConformArgs& a) {
     } else {
       if (launch.rank != 0) continue;   // the other ranks only serve exploration chunks
       SystemCampaign c{a.cases_given ? a.options.cases : 0, a.options.seed, a.options.out_dir, a.json, a.stats,
-                       ::isatty(2) == 1 && !a.json};
+                       ::isatty(2) == 1 && !a.json, a.options.quiet_limit};
       rc = system == "automata" ? conform_automata(c, out) : conform_missions(c, out);
     }
     if (rc > 1) return rc;
@@ -314,6 +325,10 @@ void add_conform_verb(CLI::App& app, int& exit_code) {
   cmd->add_option("--out", a->options.out_dir, "Folder for counterexample traces")->capture_default_str();
   cmd->add_flag("--json", a->json, "Print the report as one JSON object");
   cmd->add_flag("--stats", a->stats, "Also report what the cases reached (families, ages, poses, ...)");
+  cmd->add_option("--case-time-limit", a->case_time_limit_s,
+                  "Seconds a case may run without reaching a new step before it counts as hung (each case runs in "
+                  "a child process: a crash or a hang is a counterexample)")
+      ->capture_default_str();
   cmd->callback([a, cases, &exit_code] {
     a->cases_given = cases->count() > 0;
     exit_code = guarded([&] { return conform(*a); });

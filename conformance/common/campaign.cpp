@@ -45,6 +45,13 @@ void silence_rapidcheck_banner() {
 
 CampaignRun run_campaign(const std::string& name, uint64_t seed, int cases, const std::function<void()>& property,
                          const CaseCallback& on_case, int max_shrink_tries) {
+  return run_campaign(name, seed, cases, [&](CaseBudget&) { property(); }, on_case,
+                      ShrinkBudget{max_shrink_tries, kDefaultMaxHungTries});
+}
+
+CampaignRun run_campaign(const std::string& name, uint64_t seed, int cases,
+                         const std::function<void(CaseBudget&)>& property, const CaseCallback& on_case,
+                         const ShrinkBudget& budget) {
   silence_rapidcheck_banner();
   CampaignRun run;
   rc::detail::TestParams params;
@@ -59,9 +66,10 @@ CampaignRun run_campaign(const std::string& name, uint64_t seed, int cases, cons
   // The shrink budget: past it, every further candidate is reported as passing, so RapidCheck
   // stops at the smallest failing case found so far. Counted in tries, not seconds, so the same
   // seed still gives the same counterexample on any machine.
+  CaseBudget case_budget(run);
   const auto bounded = [&] {
-    if (run.failed && run.shrink_tries >= max_shrink_tries) return;
-    property();
+    if (run.failed && (run.shrink_tries >= budget.max_tries || run.hung_tries >= budget.max_hung_tries)) return;
+    property(case_budget);
   };
   const auto result = rc::detail::checkTestable(std::function<void()>(bounded), metadata, params, listener);
   run.failed = run.failed || result.template is<rc::detail::FailureResult>();

@@ -2,6 +2,10 @@
 // The conformance campaign: generated cases, each run in lock-step on the model and the impl;
 // on the first divergence RapidCheck shrinks the case to a minimal one, whose trace is written.
 // One seed drives everything: the same options give the same cases and the same counterexample.
+// Each case runs in a child process (conformance/common/child_process.hpp): an impl that crashes
+// or hangs on a case diverges there ("step 12: impl crashed with SIGSEGV at step 12"), and that
+// case shrinks like any other.
+#include <chrono>
 #include <cstdint>
 #include <functional>
 #include <map>
@@ -18,6 +22,8 @@ struct ConformOptions {
   uint64_t seed = 1;
   int64_t max_steps = 120;     // steps per abstract case (cosim cases run 3x as many)
   std::string out_dir = "conform-out";
+  // A case whose run reaches no new step for this long is stopped: the impl (or the model) hung.
+  std::chrono::milliseconds quiet_limit{std::chrono::seconds(60)};
   // Called after each case with (cases done, cases asked); may print progress.
   std::function<void(int, int)> on_case;
 };
@@ -27,6 +33,7 @@ struct Counterexample {
   Divergence divergence;
   std::string trace_path;
   int shrinks = 0;             // accepted shrink steps
+  Family caught_by = Family::standard;   // the family of the case that first failed (before shrinking)
 };
 
 // What the campaign reached, by the classes of state a fault may hide in (conform --stats,
@@ -43,6 +50,9 @@ struct Coverage {
   int off_centre_starts = 0;        // cases with a robot starting off its cell's centre
   int heading_near_pi_cases = 0;    // cases where a heading came within 0.05 rad of +-pi
   int completed_cases = 0;          // completion step, eP freeze and summary compared
+  // Planning steps of grouped cases by how the robots' rows changed (LockstepReach): the strip
+  // schedule's reuse of its lists, and the steps that must build them again.
+  int64_t grouped_steps_rows_kept = 0, grouped_steps_one_row_changed = 0, grouped_steps_rows_exchanged = 0;
 };
 
 struct ConformReport {
@@ -52,5 +62,10 @@ struct ConformReport {
 };
 
 ConformReport run_conform(const ConformOptions& o);
+
+// One case's lock-step run in a child process: its divergence (a crash or a hang included), or
+// nothing. `reach` gets what the run reached when it ended normally.
+std::optional<Divergence> run_case_isolated(const ExplorationCase& c, std::chrono::milliseconds quiet_limit,
+                                            LockstepReach* reach = nullptr, bool* hung = nullptr);
 
 }  // namespace swarmcheck::conformance::exploration

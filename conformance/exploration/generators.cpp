@@ -18,6 +18,7 @@ std::string_view family_name(Family f) {
     case Family::edge_poses: return "edge_poses";
     case Family::crowds: return "crowds";
     case Family::real_body: return "real_body";
+    case Family::corridors: return "corridors";
   }
   return "?";
 }
@@ -228,6 +229,53 @@ ExplorationCase gen_real_body(int64_t max_steps) {
   return c;
 }
 
+// Corridors one (mostly) or two rows high between walls of obstacles, each wall closed or with one
+// or two gaps, and robots on a quarter to a half of the corridors' cells, in any index order: on
+// the parallel path the strip schedule runs (too dense for the band), and it keeps its robot lists
+// from one build to the next while no robot changes row (impl/exploration/strip_schedule.hpp).
+// Most planning steps move robots along their corridors only, into cells not visited yet; a robot
+// crossing a gap, or moving within a two-row corridor, changes one row; two doing so at once in
+// opposite directions exchange rows.
+ExplorationCase gen_corridors(int64_t max_steps) {
+  ExplorationCase c;
+  c.family = Family::corridors;
+  Scenario& s = c.scenario;
+  s = default_scenario();
+  s.params = default_params();
+  s.params.s_range = 1;
+  s.map_size = *rc::gen::inRange<int32_t>(8, 25);
+  const int32_t n = s.map_size;
+  const int32_t height = *rc::gen::weightedOneOf<int32_t>({{3, rc::gen::just(1)}, {1, rc::gen::just(2)}});   // rows per corridor
+  s.obstacles.clear();
+  s.robots.clear();
+  std::vector<int32_t> free_cells;
+  // Half the cases close every wall: with many robots, some robot crosses a gap on most steps
+  // (each crossing builds the lists again), so only closed corridors keep every robot on its row
+  // from one step to the next and the lists are reused for a whole run.
+  const bool all_closed = *rc::gen::element(true, false);
+  for (int32_t i = 0; i < n; ++i) {
+    if (i % (height + 1) == height) {   // a wall, closed or with gaps
+      const int32_t gaps = all_closed ? 0 : *rc::gen::weightedOneOf<int32_t>({{2, rc::gen::just(0)}, {2, rc::gen::just(1)}, {1, rc::gen::just(2)}});
+      const int32_t gap = gaps > 0 ? *rc::gen::inRange(0, n) : -1, other = gaps > 1 ? *rc::gen::inRange(0, n) : -1;
+      for (int32_t j = 0; j < n; ++j)
+        if (j != gap && j != other) s.obstacles.push_back({i, j});
+      continue;
+    }
+    for (int32_t j = 0; j < n; ++j) free_cells.push_back(i * n + j);
+  }
+  const auto free_count = static_cast<int32_t>(free_cells.size());
+  const int32_t robots = *rc::gen::inRange(std::max(2, free_count / 4), std::max(3, free_count / 2 + 1));
+  const std::vector<int32_t> order = gen_cell_order(free_count, robots);
+  for (int32_t k = 0; k < robots; ++k)
+    s.robots.push_back(centre_point(free_cells[static_cast<std::size_t>(order[static_cast<std::size_t>(k)])], s));
+  s.rule = *rc::gen::elementOf(all_rule_sets());
+  s.mode = *rc::gen::weightedOneOf<Mode>({{3, rc::gen::just(Mode::abstract)}, {1, rc::gen::just(Mode::cosim)}});
+  s.seed = *rc::gen::arbitrary<uint64_t>();
+  s.params.ertu = *rc::gen::element(0.1, 0.01);
+  s.max_steps = s.mode == Mode::cosim ? 3 * max_steps : max_steps;
+  return c;
+}
+
 }  // namespace
 
 rc::Gen<ExplorationCase> gen_exploration_case(int64_t max_steps) {
@@ -236,14 +284,16 @@ rc::Gen<ExplorationCase> gen_exploration_case(int64_t max_steps) {
                                                          {2, rc::gen::just(Family::long_horizon)},
                                                          {3, rc::gen::just(Family::edge_poses)},
                                                          {3, rc::gen::just(Family::crowds)},
+                                                         {3, rc::gen::just(Family::corridors)},
                                                          {3, rc::gen::just(Family::real_body)}});
     ExplorationCase c = family == Family::standard       ? gen_standard(max_steps)
                         : family == Family::long_horizon ? gen_long_horizon()
                         : family == Family::crowds       ? gen_crowds(max_steps)
+                        : family == Family::corridors    ? gen_corridors(max_steps)
                         : family == Family::real_body    ? gen_real_body(max_steps)
                                                          : gen_edge_poses(max_steps);
-    // Crowds are there for the parallel path.
-    c.grouped = family == Family::crowds || *rc::gen::arbitrary<bool>();
+    // Crowds and corridors are there for the parallel path.
+    c.grouped = family == Family::crowds || family == Family::corridors || *rc::gen::arbitrary<bool>();
     validate(c.scenario);
     return c;
   });

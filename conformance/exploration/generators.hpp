@@ -14,6 +14,11 @@
 //   crowds:        a few tight crowds on an empty map: sparse overall (the parallel path's band
 //                  schedule) but chains of robots within reach of each other, in any index order,
 //                  often across the strips' edges; always on the parallel path
+//   corridors:     robots packed into horizontal corridors between walls (half the cases all
+//                  closed, else with a few gaps), dense
+//                  enough for the strip schedule: most steps keep every robot on its row (the
+//                  schedule reuses its lists), some move one robot across a gap or within a
+//                  corridor, some exchange rows (the lists must be built again); parallel path
 // Every family draws whether the impl plans and deposits in parallel (over strips) even for few robots.
 #include <rapidcheck.h>
 
@@ -25,7 +30,7 @@
 
 namespace swarmcheck::conformance::exploration {
 
-enum class Family { standard, long_horizon, edge_poses, crowds, real_body };
+enum class Family { standard, long_horizon, edge_poses, crowds, corridors, real_body };
 std::string_view family_name(Family f);
 
 struct ExplorationCase {

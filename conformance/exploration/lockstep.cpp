@@ -1,5 +1,6 @@
 #include "conformance/exploration/lockstep.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -16,6 +17,7 @@ using namespace swarmcheck::exploration;
 using swarmcheck::model::exploration::ExplorationModel;
 
 std::string Divergence::describe() const {
+  if (!abnormal_end.empty()) return abnormal_end;   // it names the step
   if (spec_violation) return "step " + std::to_string(step) + ": the model broke the spec: " + impl;
   return "step " + std::to_string(step) + ": " + path + " model=" + model + " impl=" + impl;
 }
@@ -51,7 +53,24 @@ std::optional<Divergence> compare_summaries(const ExplorationModel& m, const Exp
   return std::nullopt;
 }
 
-void note_reach(const ExplorationModel& m, const StepRecord& r, LockstepReach& reach) {
+void note_rows(const StepRecord& before, const StepRecord& after, LockstepReach& reach) {
+  if (after.planning_steps == before.planning_steps || before.robots.size() != after.robots.size()) return;
+  std::vector<int32_t> rows_before, rows_after;
+  int64_t changed = 0;
+  for (std::size_t r = 0; r < after.robots.size(); ++r) {
+    rows_before.push_back(before.robots[r].cell[0]);
+    rows_after.push_back(after.robots[r].cell[0]);
+    changed += rows_before.back() != rows_after.back() ? 1 : 0;
+  }
+  std::sort(rows_before.begin(), rows_before.end());
+  std::sort(rows_after.begin(), rows_after.end());
+  reach.steps_rows_kept += changed == 0 ? 1 : 0;
+  reach.steps_one_row_changed += changed == 1 ? 1 : 0;
+  reach.steps_rows_exchanged += changed >= 2 && rows_before == rows_after ? 1 : 0;
+}
+
+void note_reach(const ExplorationModel& m, const StepRecord& before, const StepRecord& r, LockstepReach& reach) {
+  note_rows(before, r, reach);
   reach.steps = r.step;
   reach.planning_steps = r.planning_steps;
   const int32_t n = m.scenario().map_size;
@@ -72,8 +91,15 @@ void note_start(const Scenario& s, LockstepReach& reach) {
 
 }  // namespace
 
-std::optional<Divergence> run_lockstep(const Scenario& s, const ExplorationOptions& options, LockstepReach* reach) {
+std::optional<Divergence> run_lockstep(const Scenario& s, const ExplorationOptions& options, LockstepReach* reach,
+                                       CaseProgress* progress) {
+  // Which engine computes which step, for a child's parent to say where a crash or a hang was.
+  const auto now = [progress](int64_t step, CaseProgress::Side side) {
+    if (progress) progress->at(step, side);
+  };
+  now(0, CaseProgress::Side::model);
   ExplorationModel m(s);
+  now(0, CaseProgress::Side::impl);
   Exploration x(s, options);
   if (reach) note_start(s, *reach);
   StepRecord before = m.record();
@@ -81,16 +107,18 @@ std::optional<Divergence> run_lockstep(const Scenario& s, const ExplorationOptio
   if (auto d = compare_cells(m, x, 0)) return d;
   if (auto d = compare_outputs(m, x, 0)) return d;
   while (!m.done() || !x.done()) {
+    now(before.step + 1, CaseProgress::Side::model);
     m.step();
-    x.step();
     const StepRecord after = m.record();
     if (std::string e = check_transition(s, before, after); !e.empty()) return Divergence{after.step, "", "", e, true};
+    now(before.step + 1, CaseProgress::Side::impl);   // its step and everything read from it
+    x.step();
     if (auto d = json_io::first_difference(after, x.record())) return Divergence{after.step, d->path, d->a, d->b, false};
     if (auto d = compare_outputs(m, x, after.step)) return d;
     const bool planned = after.planning_steps != before.planning_steps;
     if (planned || m.done() || after.step % 16 == 0)
       if (auto d = compare_cells(m, x, after.step)) return d;
-    if (reach) note_reach(m, after, *reach);
+    if (reach) note_reach(m, before, after, *reach);
     before = after;
   }
   if (reach) reach->completed = m.completion_step().has_value();

@@ -8,6 +8,7 @@
 #include <optional>
 #include <string>
 
+#include "conformance/common/child_process.hpp"
 #include "spec/exploration/types.hpp"
 #include "swarmcheck/exploration.hpp"
 
@@ -19,7 +20,11 @@ struct Divergence {
   std::string model;    // the model's value as text
   std::string impl;     // the impl's value (or, for a spec violation, the broken rule)
   bool spec_violation;  // the model broke a transition rule (impl not compared)
-  std::string describe() const;   // "step 17: robots[2].cell model=(3,4) impl=(4,4)"
+  // Not empty when the run ended abnormally in its child process (conformance/common/
+  // child_process.hpp): "impl crashed with SIGSEGV at step 17"; path, model and impl are empty.
+  std::string abnormal_end = {};
+  // "step 17: robots[2].cell model=(3,4) impl=(4,4)", or the abnormal end.
+  std::string describe() const;
 };
 
 // What one lock-step run reached (the harness's coverage figures, conform --stats).
@@ -30,10 +35,16 @@ struct LockstepReach {
   bool completed = false;
   bool heading_near_pi = false;    // some body heading came within 0.05 rad of +-pi
   bool negative_zero_start = false, off_centre_start = false;
+  // Planning steps by how the robots' rows changed: the strip schedule keeps its robot lists
+  // from one build to the next while every robot stays on its row (impl/exploration/
+  // strip_schedule.hpp), so the steps that matter are those where none, exactly one, or only
+  // robots exchanging rows (the same rows, as a multiset) moved off their rows.
+  int64_t steps_rows_kept = 0, steps_one_row_changed = 0, steps_rows_exchanged = 0;
 };
 
-// Runs both for at most s.max_steps steps (or until both are done).
+// Runs both for at most s.max_steps steps (or until both are done). `progress` (in a child
+// process) is told each step and which engine is computing it.
 std::optional<Divergence> run_lockstep(const swarmcheck::exploration::Scenario& s, const ExplorationOptions& options,
-                                       LockstepReach* reach = nullptr);
+                                       LockstepReach* reach = nullptr, CaseProgress* progress = nullptr);
 
 }  // namespace swarmcheck::conformance::exploration

@@ -28,6 +28,8 @@ void write_counterexample(const std::string& path, const ExplorationCase& c, con
   header["impl_options"] = {{"grouped", c.grouped}};
   header["divergence"] = {{"step", d.step}, {"path", d.path}, {"model", d.model}, {"impl", d.impl},
                           {"spec_violation", d.spec_violation}, {"text", d.describe()}};
+  // A run that ended abnormally (a crash, a hang): the records are the model's up to that step.
+  if (!d.abnormal_end.empty()) header["divergence"]["abnormal_end"] = d.abnormal_end;
   impl::io::AtomicFile file(path);
   std::ofstream& out = file.stream();
   out << header.dump() << '\n';

@@ -15,9 +15,14 @@
 //            travel, repeats, and neighbours of earlier queries that differ in one field), each
 //            compared whole (events, final state, cost) with a fresh planner's answer and by
 //            cost with brute force: caching across different queries
+//   sensing  a run in a world with unknown obstacles and a range sensor (generate.hpp,
+//            sensing_case): scans, cells learnt, legs re-routed, bumps
+// Each case runs in a child process (conformance/common/child_process.hpp): a crash or a hang of
+// the library is a difference ("impl crashed with SIGSEGV at step 40"), shrunk like any other.
 // A failure shrinks (RapidCheck) and is written as a mission JSON file with its .fsm, which
 // `swarmcheck mission plan` / `mission run` load, with the command that shows it (a stream also
 // gets its queries as JSON).
+#include <chrono>
 #include <cstddef>
 #include <cstdint>
 #include <map>
@@ -25,6 +30,7 @@
 #include <string>
 
 #include "conformance/common/campaign.hpp"
+#include "spec/mission/run.hpp"
 
 namespace swarmcheck::conformance::mission {
 
@@ -33,6 +39,8 @@ struct CampaignOptions {
   uint64_t seed = 1;
   std::string out_dir = "conform-out";
   CaseCallback on_case;
+  // A case that shows no progress (a run step, a planner call) for this long counts as hung.
+  std::chrono::milliseconds quiet_limit{std::chrono::seconds(60)};
 };
 
 struct Coverage {
@@ -45,15 +53,19 @@ struct Coverage {
   int plans_absent = 0;                     // no marked state reachable (compared too)
   int runs_with_yields = 0;                 // a robot gave way to another (rule 3)
   int runs_with_steering = 0;               // a robot steered round another (steering.hpp)
+  int runs_with_bumps = 0;                  // a robot bumped into an unknown obstacle (sensing.hpp)
+  int runs_rerouted_on_sensing = 0;         // a scan or a bump put a new cell on a robot's map
 };
 
 struct CampaignCounterexample {
   std::string kind;
+  std::string caught_by;    // the kind of the case that first failed (shrinking may change it)
   std::string difference;
   std::string mission_path, fsm_path, queries_path;   // queries_path: streams only
   std::string command;
   int shrinks = 0;
   std::size_t fsm_states = 0, robots = 0, tasks = 0;
+  std::optional<swarmcheck::mission::RunOptions> run_options;   // run kinds: the options it ran with
 };
 
 struct CampaignReport {
@@ -63,5 +75,11 @@ struct CampaignReport {
 };
 
 CampaignReport run_campaign(const CampaignOptions& o);
+
+// A run of the mission (impl against model, as a run case of the campaign) in a child process:
+// its difference (a crash or a hang included: "impl crashed with SIGSEGV at step 40"), or nothing.
+std::optional<std::string> diff_run_isolated(const swarmcheck::mission::Mission& m,
+                                             const swarmcheck::mission::RunOptions& o,
+                                             std::chrono::milliseconds quiet_limit);
 
 }  // namespace swarmcheck::conformance::mission

@@ -27,13 +27,22 @@ struct Observed {
 
 class Recorder final : public sm::RunObserver {
  public:
-  explicit Recorder(Observed& out) : out_(out) {}
+  Recorder(Observed& out, CaseProgress* progress, CaseProgress::Side side)
+      : out_(out), progress_(progress), side_(side) {
+    if (progress_) progress_->at(0, side_);
+  }
   void on_event(const sm::EventRecord& e) override { out_.events.push_back(e); }
-  void on_step(const sm::StepRecord& s) override { out_.steps.push_back(s); }
+  void on_step(const sm::StepRecord& s) override {
+    out_.steps.push_back(s);
+    // Records 0..k seen: step k + 1 is being computed.
+    if (progress_) progress_->at(static_cast<int64_t>(out_.steps.size()), side_);
+  }
   void on_interval(const sm::IntervalRecord& i) override { out_.intervals.push_back(i); }
 
  private:
   Observed& out_;
+  CaseProgress* progress_;
+  CaseProgress::Side side_;
 };
 
 std::string cost_text(const sm::Plan& p) {
@@ -44,10 +53,11 @@ std::string cost_text(const sm::Plan& p) {
 }  // namespace
 
 std::optional<std::string> diff_run(const sm::Mission& m, const sm::RunOptions& o,
-                                    const PlanFunction& model_plan) {
+                                    const PlanFunction& model_plan, CaseProgress* progress) {
   Observed lib, model;
-  Recorder lib_recorder(lib), model_recorder(model);
+  Recorder lib_recorder(lib, progress, CaseProgress::Side::impl);
   lib.result = sm::run_mission(m, o, &lib_recorder);
+  Recorder model_recorder(model, progress, CaseProgress::Side::model);
   sm::Planner planner(m);
   const PlanFunction exact = [&](const sm::PlanQuery& q) { return planner.plan(q); };
   model.result = swarmcheck::model::mission::run_model(m, o, model_plan ? model_plan : exact,
@@ -57,9 +67,12 @@ std::optional<std::string> diff_run(const sm::Mission& m, const sm::RunOptions& 
   return d->path + ": impl " + d->a + ", model " + d->b;
 }
 
-std::optional<std::string> diff_plan(const sm::Mission& m, const sm::PlanQuery& q) {
+std::optional<std::string> diff_plan(const sm::Mission& m, const sm::PlanQuery& q, CaseProgress* progress) {
+  if (progress) progress->at(-1, CaseProgress::Side::impl);
   const sm::Plan exact = sm::Planner(m).plan(q);
+  if (progress) progress->at(-1, CaseProgress::Side::model);
   const sm::Plan brute = swarmcheck::model::mission::brute_force_plan(m, q);
+  if (progress) progress->at(-1, CaseProgress::Side::none);
   // The objective is (makespan, total), compared by bits. Among plans of equal objective the
   // per-robot travel may differ (two robots swapping tasks): each planner's own order decides
   // (spec/mission/plan.hpp), and the stream kind compares whole plans of one planner.

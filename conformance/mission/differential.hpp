@@ -7,6 +7,7 @@
 //   and step record the observer saw, doubles by their bits: "steps[12].positions[0]: impl
 //   (1,2) model (1,3)". `model_plan`, when given, replaces the model's planner (the canary's way
 //   of planting a wrong choice).
+// `progress` (in a child process) is told which side runs and, in a run, the step it is at.
 // diff_plan: the library's exact planner against the model's brute force on one query: both
 //   find a plan or neither, with the same objective (makespan, total) bit for bit, and the exact
 //   plan is an FSM path to a marked state with the cost (per-robot travel included) it states.
@@ -14,6 +15,7 @@
 #include <optional>
 #include <string>
 
+#include "conformance/common/child_process.hpp"
 #include "spec/mission/plan.hpp"
 #include "spec/mission/run.hpp"
 
@@ -24,9 +26,9 @@ using PlanFunction =
 
 std::optional<std::string> diff_run(const swarmcheck::mission::Mission& m,
                                     const swarmcheck::mission::RunOptions& o,
-                                    const PlanFunction& model_plan = {});
+                                    const PlanFunction& model_plan = {}, CaseProgress* progress = nullptr);
 
 std::optional<std::string> diff_plan(const swarmcheck::mission::Mission& m,
-                                     const swarmcheck::mission::PlanQuery& q);
+                                     const swarmcheck::mission::PlanQuery& q, CaseProgress* progress = nullptr);
 
 }  // namespace swarmcheck::conformance::mission

@@ -40,6 +40,24 @@ struct RunCase {
   swarmcheck::mission::RunOptions options;
 };
 rc::Gen<RunCase> run_case();
+// run_case's mission as declared (before check_mission), for families that add to it.
+struct RunDecl {
+  swarmcheck::mission::MissionDecl decl;
+  swarmcheck::supervisor::Automaton fsm;
+};
+rc::Gen<RunDecl> run_decl();
+// run_case's options (drawn inside a generator: rc::gen::exec).
+swarmcheck::mission::RunOptions draw_run_options();
+// Unknown obstacles and the range sensor (spec/mission/sensing.hpp): half the cases a task
+// allocation (1..3 robots, 1..3 tasks on integer points of [-7, 7]^2), half run_case's missions,
+// in a 20 x 20 m world (cells of 0.25 or 0.5 m), robots of radius 0..0.3 m, unknown walls across
+// the ways robots drive (start to task, task to task; now and then a known one), and, half the
+// time, a nearly blind sensor (one beam of 0.25 m: the robots find walls by bumping into them,
+// and a bump puts the cells the robot's disk overlaps on its map), else 3..24 beams of 1 or 3 m
+// (they see walls and re-route first), with noise or none. Walls that would cover a start or a
+// task, or cut a task or region off on the known map, are left out: the mission passes
+// check_mission. Long enough (400 or 1200 steps) for the robots to reach the walls.
+rc::Gen<RunCase> sensing_case();
 // Head-on meetings (local steering): robots a at (0, 0) and b at (D, y) (D 3..8 m, |y| <= 0.3 m),
 // radii 0.2..0.6 m, swap ends at once (two-tasks.fsm), in the open or (one case in two) in a
 // corridor 2.5, 3 or 4 m wide (the world's border; 0.25 m cells); either body, dt 0.05 or 0.1 s.

@@ -124,7 +124,9 @@ sv::Automaton fsm_over(const std::vector<std::pair<std::string, bool>>& events,
   return a;
 }
 
-sm::RunOptions run_options() {
+}  // namespace
+
+sm::RunOptions draw_run_options() {
   sm::RunOptions o;
   o.body = one_of({sm::BodyModel::kinematic, sm::BodyModel::unicycle});
   o.dt_s = one_of({0.05, 0.1, 0.2, 0.5});
@@ -134,21 +136,27 @@ sm::RunOptions run_options() {
   return o;
 }
 
-}  // namespace
-
-rc::Gen<RunCase> run_case() {
+rc::Gen<RunDecl> run_decl() {
   return rc::gen::exec([] {
-    sm::MissionDecl d;
+    RunDecl r;
+    sm::MissionDecl& d = r.decl;
     d.fsm = "generated.fsm";
     const auto tasks = *uniform<std::size_t>(1, 4);
     for (std::size_t t = 0; t < tasks; ++t)
       d.tasks.push_back(sm::TaskDecl{"t" + std::to_string(t), *integer_point(-5, 5)});
     add_regions(d);
     add_robots(d, *uniform<std::size_t>(1, 4));
-    const sv::Automaton fsm = fsm_over(add_meanings(d), spine(d));
-    d.initial_state = fsm.states.front();
-    d.marked_states.assign(fsm.marked.begin(), fsm.marked.end());
-    return RunCase{sm::check_mission(d, fsm, "generated"), run_options()};
+    r.fsm = fsm_over(add_meanings(d), spine(d));
+    d.initial_state = r.fsm.states.front();
+    d.marked_states.assign(r.fsm.marked.begin(), r.fsm.marked.end());
+    return r;
+  });
+}
+
+rc::Gen<RunCase> run_case() {
+  return rc::gen::exec([] {
+    const RunDecl r = *run_decl();
+    return RunCase{sm::check_mission(r.decl, r.fsm, "generated"), draw_run_options()};
   });
 }
 

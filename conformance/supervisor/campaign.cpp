@@ -5,12 +5,16 @@
 #include <algorithm>
 #include <cmath>
 
+#include "conformance/common/child_process.hpp"
 #include "conformance/supervisor/counterexample.hpp"
 #include "conformance/supervisor/differential.hpp"
 #include "conformance/supervisor/generators.hpp"
 #include "impl/supervisor/fsm_io.hpp"
 #include "impl/supervisor/operations.hpp"
+#include "model/supervisor/control.hpp"
+#include "model/supervisor/observation.hpp"
 #include "model/supervisor/operations.hpp"
+#include <nlohmann/json.hpp>
 
 namespace swarmcheck::conformance::supervisor {
 
@@ -102,6 +106,119 @@ Case gen_case() {
 }
 
 
+// One case's comparison: its difference (an exception, a crash or a hang included: "the case
+// crashed with SIGSEGV"), what it built, and whether L(a) is in L(b) for an inclusion case
+// (coverage).
+struct Isolated {
+  std::optional<std::string> difference;
+  BuiltSizes built;
+  bool inclusion_fails = false;
+  bool abnormal = false;   // a crash, a hang, an exit: the side is not known yet
+  bool hung = false;
+};
+
+// The comparison in this process.
+Isolated diff_here(const std::string& kind, const std::vector<Automaton>& in) {
+  Isolated out;
+  try {
+    out.difference = diff_case(kind, in, &out.built);
+    out.inclusion_fails = kind == "inclusion" && !out.difference &&
+                          !impl::language_inclusion(impl::compile(in[0]), impl::compile(in[1])).closed;
+  } catch (const std::exception& e) {   // an exception on either side is a difference too
+    out.difference = std::string("an exception: ") + e.what();
+  }
+  return out;
+}
+
+// The comparison in a child process of its own (conformance/common/child_process.hpp).
+Isolated diff_isolated(const std::string& kind, const std::vector<Automaton>& in, std::chrono::milliseconds quiet) {
+  const ChildEnd end = run_in_child([&](CaseProgress& p) {
+    p.alive();
+    const Isolated here = diff_here(kind, in);
+    nlohmann::json j;
+    if (here.difference) j["difference"] = *here.difference;
+    j["built"] = {here.built.product_states, here.built.supervisor_states};
+    j["inclusion_fails"] = here.inclusion_fails;
+    return j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+  }, ChildLimits{quiet});
+  Isolated out;
+  out.hung = end.how == ChildEnd::How::hung;
+  if (!end.finished()) {
+    out.difference = end.describe();
+    out.abnormal = true;
+    return out;
+  }
+  const nlohmann::json j = nlohmann::json::parse(end.output);
+  if (j.contains("difference")) out.difference = j["difference"].get<std::string>();
+  out.built = BuiltSizes{j["built"][0].get<std::size_t>(), j["built"][1].get<std::size_t>()};
+  out.inclusion_fails = j["inclusion_fails"].get<bool>();
+  return out;
+}
+
+// Where a campaign runs its cases: in this process (`here`, itself a child: the first pass) or
+// each in a child of its own (the second pass).
+struct Runner {
+  CaseProgress* here;
+  std::chrono::milliseconds quiet;
+  Isolated operator()(const std::string& kind, const std::vector<Automaton>& in) const {
+    if (!here) return diff_isolated(kind, in, quiet);
+    here->alive();
+    return diff_here(kind, in);
+  }
+};
+
+// The model's side of a case alone (what diff_case computes with the model), to tell whose a
+// crash or a hang was: when the model alone runs the case to its end, it was the library's.
+void model_side(const std::string& kind, const std::vector<Automaton>& in) {
+  const auto plant = [&] {
+    const std::vector<Automaton> parts = plant_parts(in);
+    if (parts.size() == 1) return parts[0];
+    std::vector<std::string> names;
+    for (std::size_t i = 0; i < parts.size(); ++i) names.push_back("part " + std::to_string(i + 1));
+    return model::product(parts, names);
+  };
+  if (kind == "unary") {
+    (void)model::accessible_states(in[0]);
+    (void)model::coaccessible_states(in[0]);
+    (void)model::blocking_states(in[0]);
+    (void)model::trim(in[0]);
+    (void)model::accessible_part(in[0]);
+  } else if (kind == "product" || kind == "big") {
+    std::vector<std::string> names;
+    for (std::size_t i = 0; i < in.size(); ++i) names.push_back("part " + std::to_string(i + 1));
+    (void)model::product(in, names);
+  } else if (kind == "synthesis" || kind == "big_synth") {
+    const Automaton g = plant();
+    (void)model::is_controllable(g, in.back());
+    (void)model::supcon(g, in.back());
+  } else if (kind == "control") {
+    (void)model::control_report(plant(), in.back());
+  } else if (kind == "observation") {
+    (void)model::observer(in[0]);
+    const Automaton g = plant();
+    (void)model::observability(g, in.back());
+    (void)model::supcon_normal(g, in.back());
+  } else if (kind == "inclusion") {
+    (void)model::language_inclusion(in[0], in[1]);
+    (void)model::language_inclusion(in[1], in[0]);
+  }
+}
+
+// "the case crashed with ..." becomes "impl crashed with ..." when the model alone gets through
+// the case (or "model ..." when it does not).
+std::string attributed(const std::string& kind, const std::vector<Automaton>& in, const std::string& abnormal,
+                       std::chrono::milliseconds quiet) {
+  const std::string prefix = "the case ";
+  if (abnormal.rfind(prefix, 0) != 0) return abnormal;
+  const ChildEnd model_alone = run_in_child([&](CaseProgress& p) {
+    p.alive();
+    model_side(kind, in);
+    return std::string();
+  }, ChildLimits{quiet});
+  return (model_alone.finished() ? "impl " : "model ") + abnormal.substr(prefix.size()) +
+         (model_alone.finished() ? " (the model alone runs the case to its end)" : "");
+}
+
 void note(const Case& c, const BuiltSizes& built, Coverage& cov) {
   ++cov.cases_by_kind[c.kind];
   if (c.kind == "unary") cov.largest_unary_states = std::max(cov.largest_unary_states, c.inputs[0].states.size());
@@ -111,24 +228,30 @@ void note(const Case& c, const BuiltSizes& built, Coverage& cov) {
     cov.largest_supervisor_states = std::max(cov.largest_supervisor_states, built.supervisor_states);
     cov.empty_supervisors += built.supervisor_states == 0 ? 1 : 0;
   }
-  if (c.kind == "inclusion" && !impl::language_inclusion(impl::compile(c.inputs[0]), impl::compile(c.inputs[1])).closed)
-    ++cov.inclusions_failing;
 }
 
 // Without the states no input reaches, and without events no transition uses, when the
 // difference stays: what is left is the part of the counterexample that matters.
-std::vector<Automaton> reduce(const std::string& kind, std::vector<Automaton> in) {
+std::vector<Automaton> reduce(const std::string& kind, std::vector<Automaton> in, const Runner& run) {
+  // A try that hangs costs the whole time limit: it is not taken, and the reduction stops there.
+  bool hung = false;
+  const auto differs = [&](const std::vector<Automaton>& tried) {
+    if (hung) return false;
+    const Isolated r = run(kind, tried);
+    hung = r.hung;
+    return r.difference.has_value() && !r.hung;
+  };
   for (std::size_t i = 0; i < in.size(); ++i) {
     std::vector<Automaton> tried = in;
     tried[i] = model::accessible_part(tried[i]);
-    if (tried[i] != in[i] && diff_case(kind, tried)) in = tried;
+    if (tried[i] != in[i] && differs(tried)) in = tried;
     for (const auto& [e, attr] : Alphabet(in[i].events)) {
       bool used = false;
       for (const auto& [q, row] : in[i].delta) used = used || row.count(e) > 0;
       if (used) continue;
       tried = in;
       tried[i].events.erase(e);
-      if (diff_case(kind, tried)) in = tried;
+      if (differs(tried)) in = tried;
     }
   }
   return in;
@@ -175,36 +298,132 @@ std::optional<std::string> diff_case(const std::string& kind, const std::vector<
   return "unknown case kind " + kind;
 }
 
-CampaignReport run_campaign(const CampaignOptions& o) {
+namespace {
+
+// The campaign, its cases run by `run` (in this process, itself a child, or each in a child of
+// its own: then the first `skip` cases, which the first pass saw agree, are not run again).
+CampaignReport run_cases(const CampaignOptions& o, const Runner& run, int64_t skip) {
   CampaignReport report;
   std::optional<std::pair<Case, std::string>> last_failure;   // the last is the smallest
-  const auto property = [&] {
+  std::string caught_by;
+  int64_t first_cases = 0;   // cases drawn before the first failure
+  const auto property = [&](CaseBudget& budget) {
     const Case c = gen_case();
-    BuiltSizes built;
-    std::optional<std::string> d;
-    try {
-      d = diff_case(c.kind, c.inputs, &built);
-    } catch (const std::exception& e) {   // a crash of either side is a difference too
-      d = std::string("an exception: ") + e.what();
+    if (!last_failure && ++first_cases <= skip) return;
+    const Isolated r = run(c.kind, c.inputs);
+    if (r.hung) budget.hung();
+    if (run.here && !r.difference && !last_failure) run.here->agreed(first_cases);
+    if (r.difference && !last_failure) caught_by = c.kind;
+    if (r.difference) {
+      last_failure.emplace(c, *r.difference);
+    } else if (!last_failure) {
+      note(c, r.built, report.coverage);
+      report.coverage.inclusions_failing += r.inclusion_fails ? 1 : 0;
     }
-    if (d) last_failure.emplace(c, *d);
-    else if (!last_failure) note(c, built, report.coverage);
-    RC_ASSERT(!d.has_value());
+    RC_ASSERT(!r.difference.has_value());
   };
-  const CampaignRun run = conformance::run_campaign("automata: impl equals model", o.seed, o.cases, property, o.on_case);
-  report.cases_run = run.cases_run;
+  const CampaignRun campaign = conformance::run_campaign("automata: impl equals model", o.seed, o.cases, property,
+                                                         o.on_case, ShrinkBudget{});
+  report.cases_run = campaign.cases_run;
   if (!last_failure) return report;
   Counterexample cx;
   cx.kind = last_failure->first.kind;
-  cx.inputs = reduce(cx.kind, last_failure->first.inputs);
-  cx.difference = diff_case(cx.kind, cx.inputs).value_or(last_failure->second);
-  cx.shrinks = run.shrinks;
-  cx.shrink_tries = run.shrink_tries;
+  cx.caught_by = caught_by;
+  cx.inputs = reduce(cx.kind, last_failure->first.inputs, run);
+  const Isolated again = run(cx.kind, cx.inputs);
+  cx.difference = again.difference.value_or(last_failure->second);
+  if (again.abnormal) cx.difference = attributed(cx.kind, cx.inputs, cx.difference, o.quiet_limit);
+  cx.shrinks = campaign.shrinks;
+  cx.shrink_tries = campaign.shrink_tries;
   for (const auto& a : cx.inputs) cx.states += a.states.size();
   cx.files = write_counterexample(o.out_dir, "automata-seed" + std::to_string(o.seed), cx.inputs);
   cx.command = command_for(cx.kind, cx.files);
   report.counterexample = cx;
   return report;
+}
+
+nlohmann::json automaton_json(const Automaton& a) {
+  nlohmann::json events = nlohmann::json::object();
+  for (const auto& [e, attr] : a.events) events[e] = {attr.controllable, attr.observable};
+  return {{"states", a.states}, {"marked", a.marked}, {"events", events}, {"delta", a.delta}};
+}
+
+Automaton automaton_of(const nlohmann::json& j) {
+  Automaton a;
+  a.states = j.at("states").get<std::vector<std::string>>();
+  a.marked = j.at("marked").get<std::set<std::string>>();
+  for (auto it = j.at("events").begin(); it != j.at("events").end(); ++it)
+    a.events[it.key()] = EventAttr{it.value()[0].get<bool>(), it.value()[1].get<bool>()};
+  a.delta = j.at("delta").get<std::map<std::string, std::map<std::string, std::string>>>();
+  return a;
+}
+
+// The campaign's report, from the child that ran it to its parent.
+std::string report_text(const CampaignReport& r) {
+  const Coverage& v = r.coverage;
+  nlohmann::json j{{"cases_run", r.cases_run},
+                   {"coverage", {{"cases_by_kind", v.cases_by_kind}, {"largest_unary_states", v.largest_unary_states},
+                                 {"largest_product_states", v.largest_product_states},
+                                 {"largest_plant_states", v.largest_plant_states},
+                                 {"largest_supervisor_states", v.largest_supervisor_states},
+                                 {"empty_supervisors", v.empty_supervisors},
+                                 {"inclusions_failing", v.inclusions_failing}}}};
+  if (const auto& x = r.counterexample) {
+    nlohmann::json inputs = nlohmann::json::array();
+    for (const auto& a : x->inputs) inputs.push_back(automaton_json(a));
+    j["counterexample"] = {{"kind", x->kind},       {"caught_by", x->caught_by}, {"difference", x->difference},
+                           {"inputs", inputs},       {"files", x->files},         {"command", x->command},
+                           {"shrinks", x->shrinks}, {"shrink_tries", x->shrink_tries}, {"states", x->states}};
+  }
+  return j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+}
+
+CampaignReport read_report(const std::string& text) {
+  const nlohmann::json j = nlohmann::json::parse(text);
+  CampaignReport r;
+  r.cases_run = j.at("cases_run").get<int>();
+  const nlohmann::json& v = j.at("coverage");
+  r.coverage.cases_by_kind = v.at("cases_by_kind").get<std::map<std::string, int>>();
+  r.coverage.largest_unary_states = v.at("largest_unary_states").get<std::size_t>();
+  r.coverage.largest_product_states = v.at("largest_product_states").get<std::size_t>();
+  r.coverage.largest_plant_states = v.at("largest_plant_states").get<std::size_t>();
+  r.coverage.largest_supervisor_states = v.at("largest_supervisor_states").get<std::size_t>();
+  r.coverage.empty_supervisors = v.at("empty_supervisors").get<int>();
+  r.coverage.inclusions_failing = v.at("inclusions_failing").get<int>();
+  if (j.contains("counterexample")) {
+    const nlohmann::json& c = j["counterexample"];
+    Counterexample x;
+    x.kind = c.at("kind").get<std::string>();
+    x.caught_by = c.at("caught_by").get<std::string>();
+    x.difference = c.at("difference").get<std::string>();
+    for (const auto& a : c.at("inputs")) x.inputs.push_back(automaton_of(a));
+    x.files = c.at("files").get<std::vector<std::string>>();
+    x.command = c.at("command").get<std::string>();
+    x.shrinks = c.at("shrinks").get<int>();
+    x.shrink_tries = c.at("shrink_tries").get<int>();
+    x.states = c.at("states").get<std::size_t>();
+    r.counterexample = x;
+  }
+  return r;
+}
+
+}  // namespace
+
+std::optional<std::string> diff_case_isolated(const std::string& kind, const std::vector<Automaton>& in,
+                                              std::chrono::milliseconds quiet_limit) {
+  const Isolated r = diff_isolated(kind, in, quiet_limit);
+  if (r.abnormal) return attributed(kind, in, *r.difference, quiet_limit);
+  return r.difference;
+}
+
+CampaignReport run_campaign(const CampaignOptions& o) {
+  // First the whole campaign in one child; if the library crashed or hung in it, again with each
+  // case in a child of its own, so that the case that crashes shrinks like any other.
+  const FirstPass first = run_campaign_in_child(
+      [&](CaseProgress& p) { return report_text(run_cases(o, Runner{&p, o.quiet_limit}, 0)); },
+      ChildLimits{o.quiet_limit});
+  if (first.report) return read_report(*first.report);
+  return run_cases(o, Runner{nullptr, o.quiet_limit}, first.cases_agreed);
 }
 
 }  // namespace swarmcheck::conformance::supervisor

@@ -17,6 +17,7 @@
 // writes. A failure shrinks (RapidCheck), then loses every state no input reaches and every
 // event no transition uses while the difference stays, and is written as .fsm files with the
 // `swarmcheck fsm` command that shows it.
+#include <chrono>
 #include <cstddef>
 #include <cstdint>
 #include <map>
@@ -35,6 +36,9 @@ struct CampaignOptions {
   uint64_t seed = 1;
   std::string out_dir = "conform-out";
   CaseCallback on_case;
+  // Each case runs in a child process (conformance/common/child_process.hpp); one that runs this
+  // long (a case has no steps to show progress by) counts as hung, like a crash: a difference.
+  std::chrono::milliseconds quiet_limit{std::chrono::seconds(60)};
 };
 
 struct Coverage {
@@ -49,6 +53,7 @@ struct Coverage {
 
 struct Counterexample {
   std::string kind;
+  std::string caught_by;   // the kind of the case that first failed (shrinking may change it)
   std::string difference;
   std::vector<swarmcheck::supervisor::Automaton> inputs;   // minimal
   std::vector<std::string> files;                          // the inputs as .fsm files
@@ -66,8 +71,14 @@ struct CampaignReport {
 
 CampaignReport run_campaign(const CampaignOptions& o);
 
-// The difference (or nothing) of one kind of case on given inputs: what the campaign checks.
+// The difference (or nothing) of one kind of case on given inputs: what the campaign checks (in
+// this process: the campaign runs it in a child).
 std::optional<std::string> diff_case(const std::string& kind, const std::vector<swarmcheck::supervisor::Automaton>& in,
                                      BuiltSizes* built = nullptr);
+// The same in a child process, as the campaign reports it: a crash or a hang included, said to be
+// the library's when the model alone gets through the case ("impl crashed with SIGSEGV (...)").
+std::optional<std::string> diff_case_isolated(const std::string& kind,
+                                              const std::vector<swarmcheck::supervisor::Automaton>& in,
+                                              std::chrono::milliseconds quiet_limit);
 
 }  // namespace swarmcheck::conformance::supervisor

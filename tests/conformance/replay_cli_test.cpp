@@ -75,4 +75,8 @@ TEST(ConformVerb, AgreesOnTheAcceptanceCampaign) {
 TEST(ConformVerb, BadOptionsExitTwo) {
   EXPECT_EQ(sh("conform --cases 0").status, 2);
   EXPECT_EQ(sh("conform --cases many").status, 2);
+  const Result limit = sh("conform --case-time-limit 0");
+  EXPECT_EQ(limit.status, 2);
+  EXPECT_NE(limit.out.find("--case-time-limit: expected seconds, at least 0.001 and at most 86400"), std::string::npos)
+      << limit.out;
 }
