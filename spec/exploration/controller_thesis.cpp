@@ -6,7 +6,7 @@
 
 namespace swarmcheck::exploration {
 namespace {
-constexpr double kPi = std::numbers::pi;   // M_PI
+constexpr double kThesisPi = std::numbers::pi;   // M_PI
 }  // namespace
 
 template <class D>
@@ -24,13 +24,13 @@ ControllerCoreT<D> thesis_controller_rule(const ThesisControllerParamsT<D>& p, c
     const Real dx = in.x_m - in.x_desired_m;   // robot minus waypoint
     const Real dy = in.y_m - in.y_desired_m;
     // Maneuver 2: the absolute bearing, and arrival.
-    const Real beta2 = num::abs(num::atan2(dy, dx) - in.theta_rad + kPi / 2);
+    const Real beta2 = num::abs(num::atan2(dy, dx) - in.theta_rad + kThesisPi / 2);
     const Bool arrived = num::abs(dx) + num::abs(dy) < p.arrival_m;
     // Maneuver 1: the atan2 fix with the deadband (symmetric in the deltas' signs), the signed bearing.
     const DeltaT<D> fixed = atan2_fix_rule<D>(DeltaT<D>{dx, dy}, p.deadband_m);
     const Real fx = fixed.dx;
     const Real fy = fixed.dy;
-    const Real beta1 = num::atan2(fy, fx) - in.theta_rad + kPi / 2;
+    const Real beta1 = num::atan2(fy, fx) - in.theta_rad + kThesisPi / 2;
     const Bool was_driving = s.driving;
     const Real beta = num::select(was_driving, beta2, beta1);
     const Bool idle = was_driving && arrived;
