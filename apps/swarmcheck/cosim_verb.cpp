@@ -34,35 +34,6 @@ struct CosimOptions {
   bool json = false;
 };
 
-// The master unpacks each FMU into a folder of $TMPDIR. For the run, $TMPDIR is a private folder
-// registered with impl/io/interrupt.hpp, so whatever ends the process (a second Ctrl-C does not
-// wait for the FMUs to be unloaded) removes it with the unpacked FMUs in it.
-class PrivateTmpdir {
- public:
-  PrivateTmpdir() {
-    const char* tmp = std::getenv("TMPDIR");
-    if (tmp) old_ = tmp;
-    std::string pattern = std::string(tmp && *tmp ? tmp : "/tmp") + "/swarmcheck-cosim-XXXXXX";
-    if (!::mkdtemp(pattern.data())) throw InputError(pattern, "cannot create a temporary folder for the unpacked FMUs");
-    path_ = pattern;
-    slot_ = io::register_temp_folder(path_.c_str());
-    ::setenv("TMPDIR", path_.c_str(), 1);
-  }
-  ~PrivateTmpdir() {
-    if (old_) ::setenv("TMPDIR", old_->c_str(), 1);
-    else ::unsetenv("TMPDIR");
-    std::error_code ignored;
-    std::filesystem::remove_all(path_, ignored);
-    io::release_temp_file(slot_);
-  }
-  PrivateTmpdir(const PrivateTmpdir&) = delete;
-  PrivateTmpdir& operator=(const PrivateTmpdir&) = delete;
-
- private:
-  std::optional<std::string> old_;
-  std::string path_;
-  int slot_ = -1;
-};
 
 int run_cosim(const CosimOptions& o) {
   namespace fm = swarmcheck::fmi::master;
@@ -74,7 +45,6 @@ int run_cosim(const CosimOptions& o) {
   // Ctrl-C / SIGTERM stop between steps, so the FMU instances are freed and their unpacked
   // folders removed (the Master's destructor) before the process exits 130 / 143.
   const StopRequest stop("\nswarmcheck cosim: interrupted: unloading the FMUs (Ctrl-C again to stop now)\n");
-  const PrivateTmpdir unpacked;   // before the master: its folders go inside, and it goes after them
   fm::Master master(mm, config,
                     fm::MasterOptions{o.algorithm == "gauss-seidel" ? fm::Algorithm::gauss_seidel : fm::Algorithm::jacobi,
                                       o.step_timeout_s});

@@ -1,4 +1,5 @@
 #include "conformance/exploration/conform.hpp"
+#include "spec/util/json_text.hpp"
 
 #include <rapidcheck.h>
 
@@ -58,7 +59,7 @@ std::string case_outcome_text(const std::optional<Divergence>& d, const Lockstep
 }
 
 std::optional<Divergence> read_case_outcome(const std::string& text, LockstepReach& r) {
-  const json j = json::parse(text);
+  const json j = swarmcheck::json_io::parse_json_text(text, "the campaign's child process");
   const json& a = j.at("reach");
   r = LockstepReach{a[0].get<int64_t>(), a[1].get<int64_t>(), a[2].get<int64_t>(), a[3].get<bool>(),
                     a[4].get<bool>(), a[5].get<bool>(), a[6].get<bool>(), a[7].get<int64_t>(),
@@ -82,7 +83,7 @@ std::string report_text(const ConformReport& r) {
 }
 
 ConformReport read_report(const std::string& text) {
-  const json j = json::parse(text);
+  const json j = swarmcheck::json_io::parse_json_text(text, "the campaign's child process");
   ConformReport r;
   r.cases_run = j.at("cases_run").get<int>();
   r.coverage = j.at("coverage").get<Coverage>();

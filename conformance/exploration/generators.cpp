@@ -285,7 +285,7 @@ rc::Gen<ExplorationCase> gen_exploration_case(int64_t max_steps) {
                                                          {3, rc::gen::just(Family::edge_poses)},
                                                          {3, rc::gen::just(Family::crowds)},
                                                          {3, rc::gen::just(Family::corridors)},
-                                                         {3, rc::gen::just(Family::real_body)}});
+                                                         {1, rc::gen::just(Family::real_body)}});
     ExplorationCase c = family == Family::standard       ? gen_standard(max_steps)
                         : family == Family::long_horizon ? gen_long_horizon()
                         : family == Family::crowds       ? gen_crowds(max_steps)

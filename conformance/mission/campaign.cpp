@@ -1,4 +1,5 @@
 #include "conformance/mission/campaign.hpp"
+#include "spec/util/json_text.hpp"
 
 #include <rapidcheck.h>
 
@@ -226,7 +227,7 @@ CaseOutcome run_isolated(const Case& c, std::chrono::milliseconds quiet) {
     out.difference = end.describe();
     return out;
   }
-  const nlohmann::json j = nlohmann::json::parse(end.output);
+  const nlohmann::json j = swarmcheck::json_io::parse_json_text(end.output, "the campaign's child process");
   if (j.contains("difference")) out.difference = j["difference"].get<std::string>();
   else out.reached = j["reached"].get<Coverage>();
   return out;
@@ -295,7 +296,7 @@ std::string report_text(const CampaignReport& r) {
 }
 
 CampaignReport read_report(const std::string& text) {
-  const nlohmann::json j = nlohmann::json::parse(text);
+  const nlohmann::json j = swarmcheck::json_io::parse_json_text(text, "the campaign's report");
   CampaignReport r;
   r.cases_run = j.at("cases_run").get<int>();
   r.coverage = j.at("coverage").get<Coverage>();
@@ -315,7 +316,7 @@ CampaignReport read_report(const std::string& text) {
     x.tasks = c.at("tasks").get<std::size_t>();
     if (c.contains("run_options")) {
       sm::RunOptions ro;
-      json_io::from_json(json_io::Json::parse(c["run_options"].get<std::string>()), "run_options", ro);
+      json_io::from_json(json_io::parse_json_text(c["run_options"].get<std::string>(), "run_options"), "run_options", ro);
       x.run_options = ro;
     }
     r.counterexample = x;

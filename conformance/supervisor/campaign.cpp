@@ -1,4 +1,5 @@
 #include "conformance/supervisor/campaign.hpp"
+#include "spec/util/json_text.hpp"
 
 #include <rapidcheck.h>
 
@@ -148,7 +149,7 @@ Isolated diff_isolated(const std::string& kind, const std::vector<Automaton>& in
     out.abnormal = true;
     return out;
   }
-  const nlohmann::json j = nlohmann::json::parse(end.output);
+  const nlohmann::json j = swarmcheck::json_io::parse_json_text(end.output, "the campaign's child process");
   if (j.contains("difference")) out.difference = j["difference"].get<std::string>();
   out.built = BuiltSizes{j["built"][0].get<std::size_t>(), j["built"][1].get<std::size_t>()};
   out.inclusion_fails = j["inclusion_fails"].get<bool>();
@@ -379,7 +380,7 @@ std::string report_text(const CampaignReport& r) {
 }
 
 CampaignReport read_report(const std::string& text) {
-  const nlohmann::json j = nlohmann::json::parse(text);
+  const nlohmann::json j = swarmcheck::json_io::parse_json_text(text, "the campaign's report");
   CampaignReport r;
   r.cases_run = j.at("cases_run").get<int>();
   const nlohmann::json& v = j.at("coverage");

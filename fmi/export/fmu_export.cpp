@@ -203,13 +203,19 @@ void write_intocps(const ex::Scenario& s, Handshake handshake, const std::string
   mm["connections"] = connections;
   mm["parameters"] = parameters;
 
-  // The end: the library's completion step for this scenario (the same system), else max_steps.
+  // The end: the library's completion step for this scenario (the same system), else max_steps,
+  // as the engine's clock reads it after that many steps: the repeated sum of step_size (the
+  // engine steps while t + h <= endTime, t by repeated addition, so this end gives exactly that
+  // many steps; k * h may fall below the sum and lose the last step).
   if (!end_time_s) {
     ex::Scenario as_cosim = s;
     as_cosim.mode = ex::Mode::cosim;
     Exploration run(as_cosim, ExplorationOptions{});
     while (!run.done()) run.step();
-    end_time_s = static_cast<double>(run.completion_step().value_or(s.max_steps)) * s.params.step_size;
+    const int64_t steps = run.completion_step().value_or(s.max_steps);
+    double t = 0.0;
+    for (int64_t k = 0; k < steps; ++k) t = t + s.params.step_size;
+    end_time_s = t;
   }
   Json coe;
   coe["startTime"] = 0.0;

@@ -115,7 +115,7 @@ FmuSetup setup_from_json(const std::string& text) {
     throw FmuError(e.what());
   }
   try {
-    json_io::refuse_unknown_keys(j, "", {"format", "kind", "robots", "obstacles", "scenario"});
+    json_io::refuse_unknown_keys(j, "", {"format", "kind", "interface", "robots", "obstacles", "scenario"});
   } catch (const InputError& e) {
     throw FmuError(std::string("resources/swarmcheck-fmu.json: ") + e.what());
   }

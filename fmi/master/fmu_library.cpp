@@ -1,4 +1,5 @@
 #include "fmi/master/fmu_library.hpp"
+#include "impl/io/interrupt.hpp"
 
 #include <dlfcn.h>
 #include <zip.h>
@@ -149,6 +150,7 @@ FmuLibrary::FmuLibrary(const std::string& fmu_path, std::uint64_t max_unpacked_b
   std::string pattern = std::string(tmp && *tmp ? tmp : "/tmp") + "/swarmcheck-fmu-XXXXXX";
   if (!mkdtemp(pattern.data())) throw InputError(pattern, "cannot create a temporary folder to unpack the FMU");
   dir_ = pattern;
+  temp_slot_ = impl::io::register_temp_folder(dir_.c_str());
   try {
     unpack(fmu_path, dir_, max_unpacked_bytes);
     if (!std::filesystem::is_regular_file(dir_ + "/modelDescription.xml"))
@@ -194,6 +196,7 @@ FmuLibrary::FmuLibrary(const std::string& fmu_path, std::uint64_t max_unpacked_b
     unload();
     std::error_code ec;
     std::filesystem::remove_all(dir_, ec);
+    impl::io::release_temp_file(temp_slot_);
     throw;
   }
 }
@@ -219,6 +222,7 @@ FmuLibrary::~FmuLibrary() {
   unload();
   std::error_code ec;
   std::filesystem::remove_all(dir_, ec);
+  impl::io::release_temp_file(temp_slot_);
 }
 
 }  // namespace swarmcheck::fmi::master

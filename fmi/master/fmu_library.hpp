@@ -79,6 +79,7 @@ class FmuLibrary {
 
   std::string path_;
   std::string dir_;   // the temporary folder
+  int temp_slot_ = -1;   // its registration with impl/io/interrupt.hpp (removed if a signal ends the process)
   std::string so_;    // the model's library in it
   std::string resource_uri_;
   ModelDescription description_;

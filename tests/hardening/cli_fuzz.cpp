@@ -116,7 +116,10 @@ Seeds make_seeds(const fs::path& dir) {
   for (const std::string f : {"Environment.fmu", "Controller.fmu", "Body.fmu"}) fs::copy_file(fmus / f, s.dir / f, fs::copy_options::overwrite_existing);
   s.files["multimodel"] = json_seed("multimodel.json", read_bytes(fmus / "multimodel.json"));
   std::string coe = read_bytes(fmus / "coe.json");
-  coe.replace(coe.find("2441"), 4, "5");
+  {
+    const std::size_t at = coe.find("\"endTime\": ") + 11;   // the exported end, whatever it is
+    coe.replace(at, coe.find_first_of(",\n", at) - at, "5");
+  }
   s.files["coe"] = json_seed("coe.json", coe);
   // The FMU's own resource file, mutated into a copy of the FMU.
   const fs::path unpacked = dir / "env";
