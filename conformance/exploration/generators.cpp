@@ -284,16 +284,21 @@ rc::Gen<ExplorationCase> gen_exploration_case(int64_t max_steps) {
                                                          {2, rc::gen::just(Family::long_horizon)},
                                                          {3, rc::gen::just(Family::edge_poses)},
                                                          {3, rc::gen::just(Family::crowds)},
-                                                         {3, rc::gen::just(Family::corridors)},
-                                                         {1, rc::gen::just(Family::real_body)}});
+                                                         {3, rc::gen::just(Family::corridors)}});
     ExplorationCase c = family == Family::standard       ? gen_standard(max_steps)
                         : family == Family::long_horizon ? gen_long_horizon()
                         : family == Family::crowds       ? gen_crowds(max_steps)
                         : family == Family::corridors    ? gen_corridors(max_steps)
-                        : family == Family::real_body    ? gen_real_body(max_steps)
                                                          : gen_edge_poses(max_steps);
     // Crowds and corridors are there for the parallel path.
     c.grouped = family == Family::crowds || family == Family::corridors || *rc::gen::arbitrary<bool>();
+    // One standard case in ten becomes a real_body case, decided by the case's last draw: every
+    // other case draws exactly what it drew before the family existed, so the catalogue's faults
+    // are met by the same cases under the same seeds.
+    if (family == Family::standard && *rc::gen::inRange(0, 10) == 0) {
+      c = gen_real_body(max_steps);
+      c.grouped = *rc::gen::arbitrary<bool>();
+    }
     validate(c.scenario);
     return c;
   });

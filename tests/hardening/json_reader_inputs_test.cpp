@@ -128,7 +128,7 @@ TEST_F(FmuResource, AnUnknownMemberIsRefusedAsInEveryOtherInputShallowOrNested60
   std::string text = original_;
   text.insert(text.find('{') + 1, "\"colour\": \"red\", ");
   with_resource(text);
-  expect_refused(cosim(), "resources/swarmcheck-fmu.json: colour: unknown key (expected one of: format, kind, robots, obstacles, scenario)");
+  expect_refused(cosim(), "resources/swarmcheck-fmu.json: colour: unknown key (expected one of: format, kind, interface, robots, obstacles, scenario)");
   text = original_;
   text.insert(text.find('{') + 1, "\"x\": " + std::string(600, '[') + "1" + std::string(600, ']') + ", ");
   with_resource(text);
