@@ -3,6 +3,7 @@
 #include <fcntl.h>
 #include <poll.h>
 #include <sys/mman.h>
+#include <sys/prctl.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -112,6 +113,7 @@ ChildEnd run_in_child(const std::function<std::string(CaseProgress&)>& work, con
   // Whatever this process has buffered for stdout and stderr goes out now, once: the child gets a
   // copy of the buffers, and would write it again if anything in it flushed them.
   std::fflush(nullptr);
+  const pid_t parent = ::getpid();
   const pid_t pid = ::fork();
   if (pid < 0) {
     const int err = errno;
@@ -120,6 +122,10 @@ ChildEnd run_in_child(const std::function<std::string(CaseProgress&)>& work, con
     throw std::runtime_error(std::string("cannot start a child process: ") + std::strerror(err));
   }
   if (pid == 0) {
+    // The case dies with the campaign: a second Ctrl-C ends the parent at once, and an orphaned
+    // case would run on (found: SecondSignal tests left `conform` cases running for half an hour).
+    ::prctl(PR_SET_PDEATHSIG, SIGKILL);
+    if (::getppid() != parent) ::_exit(1);   // the parent ended before the line above
     ::close(fds[0]);
     child_main(fds[1], page.get(), work);
   }
