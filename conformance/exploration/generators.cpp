@@ -57,6 +57,18 @@ Point_m centre_point(int32_t cell, const Scenario& s) {
   return centre_of(CellIndex{cell / s.map_size, cell % s.map_size}, s.cell_size);
 }
 
+// The first `robots` cells of `order` get a robot at their centre, the next `obstacles` cells an
+// obstacle (no draws: the case's randomness is in `order` and the counts).
+void place_in_order(Scenario& s, const std::vector<int32_t>& order, int32_t robots, int32_t obstacles) {
+  s.robots.clear();
+  s.obstacles.clear();
+  for (int32_t k = 0; k < robots; ++k) s.robots.push_back(centre_point(order[static_cast<std::size_t>(k)], s));
+  for (int32_t k = robots; k < robots + obstacles; ++k) {
+    const int32_t cell = order[static_cast<std::size_t>(k)];
+    s.obstacles.push_back({cell / s.map_size, cell % s.map_size});
+  }
+}
+
 ExplorationCase gen_standard(int64_t max_steps) {
   ExplorationCase c;
   Scenario& s = c.scenario;
@@ -68,13 +80,7 @@ ExplorationCase gen_standard(int64_t max_steps) {
   const int32_t robots = *rc::gen::inRange<int32_t>(1, std::max(2, std::min(placed_max, cells * 2 / 3) + 1));
   const int32_t obstacles = *rc::gen::inRange<int32_t>(0, std::max(1, std::min(placed_max - robots, cells / 3) + 1));
   s.cell_size = *rc::gen::element(1.0, 0.5, 3.0);
-  s.robots.clear();
-  s.obstacles.clear();
-  for (int32_t k = 0; k < robots; ++k) s.robots.push_back(centre_point(order[static_cast<std::size_t>(k)], s));
-  for (int32_t k = robots; k < robots + obstacles; ++k) {
-    const int32_t cell = order[static_cast<std::size_t>(k)];
-    s.obstacles.push_back({cell / s.map_size, cell % s.map_size});
-  }
+  place_in_order(s, order, robots, obstacles);
   s.rule = *rc::gen::elementOf(all_rule_sets());
   s.mode = *rc::gen::weightedOneOf<Mode>({{3, rc::gen::just(Mode::abstract)}, {1, rc::gen::just(Mode::cosim)}});
   s.seed = *rc::gen::arbitrary<uint64_t>();
@@ -209,13 +215,7 @@ ExplorationCase gen_real_body(int64_t max_steps) {
   const std::vector<int32_t> order = gen_cell_order(cells, placed_max);
   const int32_t robots = *rc::gen::inRange<int32_t>(1, std::min(9, std::max(1, placed_max * 2 / 3)) + 1);
   const int32_t obstacles = *rc::gen::inRange<int32_t>(0, std::max(1, std::min(placed_max - robots, cells / 3) + 1));
-  s.robots.clear();
-  s.obstacles.clear();
-  for (int32_t k = 0; k < robots; ++k) s.robots.push_back(centre_point(order[static_cast<std::size_t>(k)], s));
-  for (int32_t k = robots; k < robots + obstacles; ++k) {
-    const int32_t cell = order[static_cast<std::size_t>(k)];
-    s.obstacles.push_back({cell / s.map_size, cell % s.map_size});
-  }
+  place_in_order(s, order, robots, obstacles);
   s.controller = *rc::gen::element(ControllerKind::swarmcheck, ControllerKind::thesis);
   s.body.kind = BodyKind::intocps;
   IntocpsBodyParams& b = s.body.intocps;
