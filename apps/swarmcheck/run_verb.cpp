@@ -12,8 +12,8 @@
 #include "apps/swarmcheck/robot_options.hpp"
 #include "apps/swarmcheck/verb.hpp"
 #include "conformance/exploration/engine.hpp"
-#include "conformance/exploration/summary.hpp"
 #include "swarmcheck/exploration.hpp"
+#include "swarmcheck/run_report.hpp"
 #include "spec/exploration/neighbourhood.hpp"
 #include "spec/exploration/reachability.hpp"
 #include "spec/exploration/scenario.hpp"
@@ -41,13 +41,6 @@ struct ExplorationRunOptions {
   int64_t stall_window = 100000;   // master steps without a newly visited cell; 0: never stop
   int32_t threads = 0;             // 0: every core
   Budgets budgets;
-};
-
-// How a run ended, beyond the summary's counters.
-struct RunEnd {
-  Reachability reach;
-  std::string outcome;   // completed | max_steps | stalled
-  std::string stall_reason;
 };
 
 // Validated once (a 10^6-robot file's cells are checked on loading only).
@@ -87,19 +80,12 @@ class Progress {
 };
 
 void print_summary(const Scenario& s, const ExplorationRunOptions& o, const cx::Simulation& sim, const RunEnd& end) {
-  const int64_t reachable = end.reach.reachable_free_cells;
-  const double eP_reachable = reachable > 0 ? exploration_percent(sim.visited(), reachable) : 100.0;
   if (o.json) {
-    json_io::Json j = cx::run_summary(sim);
-    j["engine"] = o.engine;
-    j["outcome"] = end.outcome;
-    j["reachable_cells"] = reachable;
-    j["unreachable_cells"] = end.reach.unreachable_free_cells;
-    j["eP_reachable"] = eP_reachable;
-    if (!end.stall_reason.empty()) j["stalled"] = end.stall_reason;
-    fmt::print("{}\n", json_io::dump_text(j));
+    fmt::print("{}\n", json_io::dump_text(run_report(sim, end, o.engine)));
     return;
   }
+  const int64_t reachable = end.reach.reachable_free_cells;
+  const double eP_reachable = reachable > 0 ? exploration_percent(sim.visited(), reachable) : 100.0;
   const auto completion = sim.completion_step();
   const double eP = sim.eP(), sTime = sim.sTime();
   const int64_t steps = sim.steps(), planning_steps = sim.planning_steps(), visited = sim.visited(),
@@ -144,7 +130,8 @@ double estimated_trace_bytes(const Scenario& s, const ExplorationRunOptions& o, 
 
 // Runs either engine (the library, or the reference model through the harness). Status 0 when
 // the run completed, 1 when it stopped at max_steps or stalled.
-int run_with(conformance::exploration::Simulation& sim, const Scenario& s, const ExplorationRunOptions& o, RunEnd end) {
+int run_with(conformance::exploration::Simulation& sim, const Scenario& s, const ExplorationRunOptions& o,
+             const Reachability& reach) {
   if (!o.trace_path.empty())
     require_within("--trace " + o.trace_path, "the trace (" + std::to_string(s.max_steps) + " steps at most)",
                    estimated_trace_bytes(s, o, trace_line(sim.record()).size()), o.budgets.trace_bytes,
@@ -159,29 +146,15 @@ int run_with(conformance::exploration::Simulation& sim, const Scenario& s, const
   }
   recorder.observe(sim);
   Progress progress;
-  int64_t last_visited = sim.visited(), last_progress_step = sim.steps();
-  while (!sim.done()) {
-    sim.step();
-    if (sim.visited() != last_visited) {
-      last_visited = sim.visited();
-      last_progress_step = sim.steps();
-    }
-    // Stalled: nothing left a robot can reach, or no new cell for the whole window.
-    if (!sim.completion_step() && end.reach.unreachable_free_cells > 0 && sim.visited() >= end.reach.reachable_free_cells)
-      end.stall_reason = "every reachable free cell is visited; " + std::to_string(end.reach.unreachable_free_cells) +
-                         " free cells are unreachable";
-    else if (o.stall_window > 0 && sim.steps() - last_progress_step >= o.stall_window)
-      end.stall_reason = "no newly visited cell in the last " + std::to_string(o.stall_window) + " steps (--stall-window)";
-    const bool last = sim.done() || !end.stall_reason.empty();
-    if (trace && (sim.steps() % o.trace_every == 0 || last)) trace->stream() << trace_line(sim.record()) << '\n';
-    recorder.observe(sim);
-    if (sim.steps() % 4096 == 0) progress.update(sim.steps(), sim.eP(), s.max_steps);
-    if (last) break;
-  }
+  // The loop and its stall rule are the library's (swarmcheck/run_report.hpp), as Python runs it.
+  const RunEnd end = run_to_end(sim, reach, o.stall_window, [&](const cx::Simulation& at, bool last) {
+    if (trace && (at.steps() % o.trace_every == 0 || last)) trace->stream() << trace_line(at.record()) << '\n';
+    recorder.observe(at);
+    if (at.steps() % 4096 == 0) progress.update(at.steps(), at.eP(), s.max_steps);
+  });
   progress.finish();
   recorder.finish(sim);
   if (trace) trace->commit();
-  end.outcome = sim.completion_step() ? "completed" : !end.stall_reason.empty() ? "stalled" : "max_steps";
   print_summary(s, o, sim, end);
   return sim.completion_step() ? 0 : 1;
 }
@@ -206,15 +179,14 @@ int run(const ExplorationRunOptions& o) {
   require_within(where, "a " + std::to_string(s.map_size) + " x " + std::to_string(s.map_size) + " map with " +
                             std::to_string(s.robots.size()) + " robots",
                  estimate, o.budgets.memory_bytes, "--memory-limit");
-  RunEnd end;
-  end.reach = reachability(s);
-  if (end.reach.unreachable_free_cells > 0)
+  const Reachability reach = reachability(s);
+  if (reach.unreachable_free_cells > 0)
     fmt::print(stderr, "swarmcheck run: warning: {} of {} free cells cannot be reached by any robot (walled in); "
-               "eP cannot reach 100 %\n", end.reach.unreachable_free_cells, free_cell_count(s));
+               "eP cannot reach 100 %\n", reach.unreachable_free_cells, free_cell_count(s));
   swarmcheck::exploration::ExplorationOptions options;
   options.threads = o.threads;
   const auto sim = cx::make_simulation(engine, valid, options);
-  const int status = run_with(*sim, s, o, end);
+  const int status = run_with(*sim, s, o, reach);
   report_memory(o.budgets, estimate);
   return status;
 }

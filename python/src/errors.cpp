@@ -1,0 +1,25 @@
+// Bad input never crashes the interpreter: the library's InputError (file:line:column or a JSON
+// path, then what was expected: the CLI's message, without its "swarmcheck: error: " prefix)
+// becomes swarmcheck.InputError, a ValueError.
+#include <pybind11/pybind11.h>
+
+#include "python/src/bindings.hpp"
+#include "spec/util/input_error.hpp"
+
+namespace py = pybind11;
+
+namespace swarmcheck::python {
+
+void bind_errors(py::module_& m) {
+  py::register_exception<InputError>(m, "InputError", PyExc_ValueError);
+  // What a budget or a buffer could not foresee: MemoryError, as Python's own allocations.
+  py::register_exception_translator([](std::exception_ptr p) {
+    try {
+      if (p) std::rethrow_exception(p);
+    } catch (const std::bad_alloc&) {
+      PyErr_SetString(PyExc_MemoryError, "out of memory (lower the input's size)");
+    }
+  });
+}
+
+}  // namespace swarmcheck::python
