@@ -11,7 +11,9 @@ namespace py = pybind11;
 namespace swarmcheck::python {
 
 void bind_errors(py::module_& m) {
-  py::register_exception<InputError>(m, "InputError", PyExc_ValueError);
+  auto& error = py::register_exception<InputError>(m, "InputError", PyExc_ValueError);
+  error.attr("__doc__") = "Bad input: the command line's message (file:line:column or a JSON path, then what was "
+                          "expected), without its 'swarmcheck: error: ' prefix. A ValueError.";
   // What a budget or a buffer could not foresee: MemoryError, as Python's own allocations.
   py::register_exception_translator([](std::exception_ptr p) {
     try {
