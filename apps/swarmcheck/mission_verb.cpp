@@ -20,6 +20,7 @@
 #include "spec/util/hana_json.hpp"
 #include "conformance/mission/engine.hpp"
 #include "swarmcheck/mission.hpp"
+#include "swarmcheck/mission_report.hpp"
 #include "impl/io/atomic_file.hpp"
 #include "views/mission_svg.hpp"
 
@@ -66,20 +67,7 @@ int run_plan(const PlanOptions& o) {
   const sm::Plan p = engines::plan(m, q, engines::planner_named(o.planner));
   const auto seqs = sm::task_sequences(m, p.events);
   if (o.json) {
-    Json robots = Json::array();
-    for (std::size_t r = 0; r < m.robots.size(); ++r) {
-      Json tasks = Json::array();
-      for (const auto t : seqs[r]) tasks.push_back(m.tasks[t].name);
-      robots.push_back({{"name", m.robots[r].name},
-                        {"tasks", tasks},
-                        {"travel", p.found ? Json(p.cost.travel[r]) : Json(nullptr)}});
-    }
-    Json j = {{"mission", o.file},       {"planner", o.planner}, {"from", from},
-              {"found", p.found},        {"final_state", p.found ? Json(p.final_state) : Json(nullptr)},
-              {"events", p.events},      {"robots", robots},
-              {"makespan", p.found ? Json(p.cost.makespan) : Json(nullptr)},
-              {"total", p.found ? Json(p.cost.total) : Json(nullptr)}};
-    fmt::print("{}\n", json_io::dump_text(j, 2));
+    fmt::print("{}\n", json_io::dump_text(sm::mission_plan_report(m, p, o.file, o.planner, from), 2));
   } else if (p.found) {
     fmt::print("plan ({} planner) from {} to {}: {} events\n", o.planner, from, p.final_state,
                p.events.size());
@@ -162,34 +150,8 @@ int run_run(const RunOptions& o) {
   if (trace) trace->commit();
   if (svg) svg->commit();
   report_memory(o.budgets, estimate);
-  std::vector<std::string> events;
-  for (const auto& e : r.events) events.push_back(e.event);
   if (o.json) {
-    Json travel = Json::object();
-    for (std::size_t k = 0; k < m.robots.size(); ++k) travel[m.robots[k].name] = r.travel[k];
-    Json intervals = Json::array();
-    for (const auto& i : r.intervals)
-      intervals.push_back({{"robot", i.robot}, {"activity", json_io::enum_to_string(i.activity)},
-                           {"from", i.from_s}, {"to", i.to_s}});
-    Json j = {{"mission", o.file},
-              {"body", o.body},
-              {"completed", r.completed},
-              {"reason", r.reason},
-              {"final_state", r.final_state},
-              {"events", events},
-              {"time", r.time_s},
-              {"travel", travel},
-              {"makespan_planned", r.makespan_planned},
-              {"replans", r.replans},
-              {"plan_cache_hits", r.plan_cache_hits},
-              {"intervals", intervals},
-              {"yields", r.yields},
-              {"replans_sensed", r.replans_sensed},
-              {"bumps", r.bumps},
-              {"steers", r.steers},
-              // least gap between two robots' disks over the run; null with one robot
-              {"clearance_min_m", std::isfinite(r.clearance_min_m) ? Json(r.clearance_min_m) : Json()}};
-    fmt::print("{}\n", json_io::dump_text(j, 2));
+    fmt::print("{}\n", json_io::dump_text(sm::mission_run_report(m, r, o.file, o.body), 2));
   } else {
     for (const auto& e : r.events)
       fmt::print("  t={:8.2f} s  {:<6} -> {}\n", e.time_s, e.event, e.state_after);

@@ -9,5 +9,6 @@ void bind_scenario(pybind11::module_& m);     // scenario_bindings.cpp
 void bind_simulation(pybind11::module_& m);   // simulation_bindings.cpp: Simulation, run()
 void bind_overhead(pybind11::module_& m);     // overhead_bindings.cpp: the library timed alone
 void bind_automata(pybind11::module_& m);     // automaton_bindings.cpp
+void bind_mission(pybind11::module_& m);      // mission_bindings.cpp
 
 }  // namespace swarmcheck::python

@@ -9,4 +9,5 @@ PYBIND11_MODULE(_swarmcheck, m) {
   swarmcheck::python::bind_simulation(m);
   swarmcheck::python::bind_overhead(m);
   swarmcheck::python::bind_automata(m);
+  swarmcheck::python::bind_mission(m);
 }

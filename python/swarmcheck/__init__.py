@@ -36,6 +36,8 @@ from ._swarmcheck import (  # noqa: F401  (the public names of the package)
     control_report,
     is_controllable,
     language_inclusion,
+    mission_plan,
+    mission_run,
     observability,
     product,
     read_fsm_files,
@@ -48,7 +50,8 @@ from ._swarmcheck import (  # noqa: F401  (the public names of the package)
 __all__ = [
     "BODIES", "CONTROLLERS", "MODES", "PRESETS", "RULES",
     "Automaton", "InputError", "Scenario", "Simulation", "Trace",
-    "compare", "control_report", "is_controllable", "language_inclusion", "observability",
+    "compare", "control_report", "is_controllable", "language_inclusion", "mission_plan", "mission_run",
+    "observability",
     "pheromone_digest", "product", "read_fsm_files", "read_trace", "run", "supcon",
     "supcon_normal", "synthesize",
 ]

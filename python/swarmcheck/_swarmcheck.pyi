@@ -197,3 +197,10 @@ def language_inclusion(a: Automaton, b: Automaton) -> Dict[str, Any]:
     """L(a) in L(b) and Lm(a) in Lm(b), with shortlex-least witnesses."""
 def compare(a: Automaton, b: Automaton) -> Dict[str, Any]:
     """`swarmcheck fsm compare --json` (without the files)."""
+
+def mission_plan(mission: PathLike, from_state: Optional[str] = None) -> Dict[str, Any]:
+    """`swarmcheck mission plan MISSION --json` (the exact planner)."""
+def mission_run(mission: PathLike, *, body: str = "unicycle", dt: float = 0.05, max_time: float = 3600.0,
+                speed: float = 0.5, seed: int = 1, trace: Optional[PathLike] = None,
+                records: bool = False) -> Dict[str, Any]:
+    """`swarmcheck mission run MISSION --json`; records=True adds "event_records" (one dict an event)."""
