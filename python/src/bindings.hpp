@@ -10,5 +10,6 @@ void bind_simulation(pybind11::module_& m);   // simulation_bindings.cpp: Simula
 void bind_overhead(pybind11::module_& m);     // overhead_bindings.cpp: the library timed alone
 void bind_automata(pybind11::module_& m);     // automaton_bindings.cpp
 void bind_mission(pybind11::module_& m);      // mission_bindings.cpp
+void bind_dse(pybind11::module_& m);          // dse_bindings.cpp
 
 }  // namespace swarmcheck::python

@@ -34,6 +34,7 @@ from ._swarmcheck import (  # noqa: F401  (the public names of the package)
     Simulation,
     compare,
     control_report,
+    dse,
     is_controllable,
     language_inclusion,
     mission_plan,
@@ -50,7 +51,7 @@ from ._swarmcheck import (  # noqa: F401  (the public names of the package)
 __all__ = [
     "BODIES", "CONTROLLERS", "MODES", "PRESETS", "RULES",
     "Automaton", "InputError", "Scenario", "Simulation", "Trace",
-    "compare", "control_report", "is_controllable", "language_inclusion", "mission_plan", "mission_run",
+    "compare", "control_report", "dse", "is_controllable", "language_inclusion", "mission_plan", "mission_run",
     "observability",
     "pheromone_digest", "product", "read_fsm_files", "read_trace", "run", "supcon",
     "supcon_normal", "synthesize",

@@ -204,3 +204,7 @@ def mission_run(mission: PathLike, *, body: str = "unicycle", dt: float = 0.05, 
                 speed: float = 0.5, seed: int = 1, trace: Optional[PathLike] = None,
                 records: bool = False) -> Dict[str, Any]:
     """`swarmcheck mission run MISSION --json`; records=True adds "event_records" (one dict an event)."""
+
+def dse(config: PathLike, scenario: ScenarioSource = None, *, threads: int = 0, journal: Optional[PathLike] = None,
+        preset: Optional[str] = ..., controller: Optional[str] = ..., body: Optional[str] = ...) -> Dict[str, Any]:
+    """`swarmcheck dse CONFIG --json`: the results object, its "points" one record a design point."""
