@@ -13,13 +13,13 @@
 
 #include "impl/io/atomic_file.hpp"
 #include "apps/swarmcheck/verb.hpp"
+#include "proofs/obligations/report_json.hpp"
 #include "proofs/obligations/runner.hpp"
 
 namespace swarmcheck::cli {
 namespace {
 
 using proofs::ObligationReport;
-using Json = nlohmann::ordered_json;
 
 struct ProveOptions {
   std::string only;
@@ -84,37 +84,6 @@ void print_table(const std::vector<ObligationReport>& reports, double total) {
   }
 }
 
-// The label and time of the query that took longest (where an obligation's time goes).
-Json slowest(const ObligationReport& r) {
-  const proofs::QueryRecord* worst = nullptr;
-  for (const proofs::QueryRecord& q : r.queries)
-    if (!worst || q.seconds > worst->seconds) worst = &q;
-  if (!worst) return nullptr;
-  return Json{{"label", worst->label}, {"seconds", worst->seconds}, {"answer", worst->answer}};
-}
-
-Json report_json(const std::vector<ObligationReport>& reports, double total,
-                 const std::vector<std::string>& traces) {
-  Json list = Json::array();
-  for (std::size_t k = 0; k < reports.size(); ++k) {
-    const ObligationReport& r = reports[k];
-    Json j = {{"name", r.name},         {"property", r.property},
-              {"expected", proofs::to_string(r.expected)},
-              {"result", proofs::to_string(r.result)},
-              {"met", r.met()},         {"seconds", r.seconds},
-              {"queries", r.queries.size()},
-              {"slowest_query", slowest(r)},
-              {"detail", r.detail},     {"assumptions", r.assumptions},
-              {"reads", r.reads},       {"step_calls", r.step_calls},
-              {"unread", r.unread}};
-    if (!traces[k].empty()) j["trace"] = traces[k];
-    list.push_back(j);
-  }
-  bool all_met = true;
-  for (const ObligationReport& r : reports) all_met = all_met && r.met();
-  return Json{{"obligations", list}, {"all_met", all_met}, {"total_seconds", total}};
-}
-
 int run_prove(const ProveOptions& o) {
   const auto obligations = selected(o);
   std::filesystem::path smt2_dir, trace_dir;
@@ -136,7 +105,7 @@ int run_prove(const ProveOptions& o) {
     }
   }
   if (o.json)
-    fmt::print("{}\n", report_json(reports, total, traces).dump(2));
+    fmt::print("{}\n", proofs::prove_report_json(reports, total, traces).dump(2));
   else
     print_table(reports, total);
   for (const ObligationReport& r : reports)

@@ -11,5 +11,6 @@ void bind_overhead(pybind11::module_& m);     // overhead_bindings.cpp: the libr
 void bind_automata(pybind11::module_& m);     // automaton_bindings.cpp
 void bind_mission(pybind11::module_& m);      // mission_bindings.cpp
 void bind_dse(pybind11::module_& m);          // dse_bindings.cpp
+void bind_prove(pybind11::module_& m);        // prove_bindings.cpp
 
 }  // namespace swarmcheck::python

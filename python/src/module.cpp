@@ -11,4 +11,5 @@ PYBIND11_MODULE(_swarmcheck, m) {
   swarmcheck::python::bind_automata(m);
   swarmcheck::python::bind_mission(m);
   swarmcheck::python::bind_dse(m);
+  swarmcheck::python::bind_prove(m);
 }

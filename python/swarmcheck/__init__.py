@@ -26,6 +26,7 @@ from ._swarmcheck import (  # noqa: F401  (the public names of the package)
     BODIES,
     CONTROLLERS,
     MODES,
+    OBLIGATIONS,
     PRESETS,
     RULES,
     Automaton,
@@ -41,6 +42,7 @@ from ._swarmcheck import (  # noqa: F401  (the public names of the package)
     mission_run,
     observability,
     product,
+    prove,
     read_fsm_files,
     run,
     supcon,
@@ -49,11 +51,11 @@ from ._swarmcheck import (  # noqa: F401  (the public names of the package)
 )
 
 __all__ = [
-    "BODIES", "CONTROLLERS", "MODES", "PRESETS", "RULES",
+    "BODIES", "CONTROLLERS", "MODES", "OBLIGATIONS", "PRESETS", "RULES",
     "Automaton", "InputError", "Scenario", "Simulation", "Trace",
     "compare", "control_report", "dse", "is_controllable", "language_inclusion", "mission_plan", "mission_run",
     "observability",
-    "pheromone_digest", "product", "read_fsm_files", "read_trace", "run", "supcon",
+    "pheromone_digest", "product", "prove", "read_fsm_files", "read_trace", "run", "supcon",
     "supcon_normal", "synthesize",
 ]
 

@@ -19,6 +19,8 @@ PRESETS: Tuple[str, ...]
 """The named systems (`--preset`)."""
 MODES: Tuple[str, ...]
 """abstract and cosim (`--mode`)."""
+OBLIGATIONS: Tuple[str, ...]
+"""The names of the Z3 proof obligations (`prove --only`)."""
 
 class InputError(ValueError):
     """Bad input: the command line's message (file:line:column or a JSON path, then what was expected)."""
@@ -208,3 +210,6 @@ def mission_run(mission: PathLike, *, body: str = "unicycle", dt: float = 0.05, 
 def dse(config: PathLike, scenario: ScenarioSource = None, *, threads: int = 0, journal: Optional[PathLike] = None,
         preset: Optional[str] = ..., controller: Optional[str] = ..., body: Optional[str] = ...) -> Dict[str, Any]:
     """`swarmcheck dse CONFIG --json`: the results object, its "points" one record a design point."""
+
+def prove(only: Optional[str] = None, timeout: float = 120.0) -> Dict[str, Any]:
+    """`swarmcheck prove --json`: every Z3 obligation, or the one named `only`, each in a forked prover."""
