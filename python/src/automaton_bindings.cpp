@@ -5,17 +5,64 @@
 
 #include <set>
 
+#include "impl/supervisor/fsm.hpp"
+#include "impl/supervisor/operations.hpp"
 #include "python/src/bindings.hpp"
+#include "python/src/interrupt.hpp"
 #include "python/src/json_convert.hpp"
 #include "swarmcheck/supervisor.hpp"
 #include "views/fsm_svg.hpp"
 
 namespace py = pybind11;
 namespace sv = swarmcheck::supervisor;
+namespace is = swarmcheck::impl::supervisor;
 using sv::Automaton;
 
 namespace swarmcheck::python {
 namespace {
+
+// The library's budgeted constructions (the CLI's, without limits), the GIL released: Ctrl-C
+// stops one at its next budget check (every 4 096 states of a product or synthesis, 256 classes
+// of an observer, 4 096 pairs of a comparison) with KeyboardInterrupt.
+template <class F>
+auto budgeted(F&& f) {
+  return without_gil(
+      [&](SignalPoll& poll) {
+        WorkBudget budget;
+        budget.set_interrupt([&poll] { poll(); });
+        return f(budget);
+      },
+      1);
+}
+
+Automaton product_of(const std::vector<Automaton>& parts, std::vector<std::string> names) {
+  if (parts.empty()) throw InputError("product", "expected at least one automaton");
+  for (std::size_t i = names.size(); i < parts.size(); ++i) names.push_back("part " + std::to_string(i + 1));
+  return budgeted([&](WorkBudget& budget) {
+    std::vector<is::Fsm> compiled;
+    compiled.reserve(parts.size());
+    for (const auto& a : parts) compiled.push_back(is::compile(a));
+    std::vector<const is::Fsm*> ptrs;
+    for (const auto& f : compiled) ptrs.push_back(&f);
+    return is::decompile(is::product(ptrs, names, budget, is::PeakModel{}));
+  });
+}
+
+Automaton supcon_of(const Automaton& plant, const Automaton& spec) {
+  return budgeted([&](WorkBudget& budget) {
+    const is::Fsm p = is::compile(plant), q = is::compile(spec);   // the synthesis's names borrow them
+    is::Synthesis s = is::synthesize(p, q, budget, is::PeakModel{0, 208.0, 16.0});
+    is::store_names(s.supervisor, s.names);
+    return is::decompile(s.supervisor);
+  });
+}
+
+Automaton supcon_normal_of(const Automaton& plant, const Automaton& spec) {
+  return budgeted([&](WorkBudget& budget) {
+    const is::Fsm p = is::compile(plant), q = is::compile(spec);
+    return is::decompile(is::supcon_normal(p, q, budget, is::NormalPeaks{}));
+  });
+}
 
 py::object witness_or_none(bool ok, const std::vector<std::string>& w) {
   return ok ? py::object(py::none()) : py::object(py::cast(w));
@@ -61,8 +108,7 @@ Automaton one_of(const py::handle& h, const char* what) {
     auto parts = h.cast<std::vector<Automaton>>();
     if (parts.empty()) throw InputError(what, "expected at least one automaton");
     if (parts.size() == 1) return parts.front();
-    py::gil_scoped_release release;
-    return sv::product(parts);
+    return product_of(parts, {});
   }
   throw py::type_error(std::string(what) + ": expected an Automaton or a list of them");
 }
@@ -133,7 +179,11 @@ states[0] is the initial state.)")
       .def("trim", [](const Automaton& a) { py::gil_scoped_release r; return sv::trim(a); }, "The accessible and coaccessible part.")
       .def("accessible_part", [](const Automaton& a) { py::gil_scoped_release r; return sv::accessible_part(a); },
            "The accessible part.")
-      .def("observer", [](const Automaton& a) { py::gil_scoped_release r; return sv::observer(a); },
+      .def("observer", [](const Automaton& a) {
+        return budgeted([&](WorkBudget& budget) {
+          return is::decompile(is::observer(is::compile(a), budget, is::PeakModel{}, "observer"));
+        });
+      },
            "The observer (`fsm project`): the projection onto the observable events, determinised.")
       .def("__eq__", [](const Automaton& a, const Automaton& b) { return a == b; })
       .def("__len__", [](const Automaton& a) { return a.states.size(); })
@@ -145,40 +195,30 @@ states[0] is the initial state.)")
   m.def("read_fsm_files", [](const std::vector<std::string>& paths) { return sv::read_fsm_files(paths); }, py::arg("paths"),
         "Read the .fsm files of one command together: an attribute (c|uc, o|uo) a file leaves unstated comes from "
         "the files that state it (as the CLI reads --plant and --spec files).");
-  m.def("product", [](const std::vector<Automaton>& parts, std::vector<std::string> names) {
-    py::gil_scoped_release release;
-    return sv::product(parts, names);
-  }, py::arg("automata"), py::arg("names") = std::vector<std::string>{},
+  m.def("product", &product_of, py::arg("automata"), py::arg("names") = std::vector<std::string>{},
         "The synchronous product (accessible part), states 'x1.x2...', as `swarmcheck fsm product` writes it.");
   m.def("supcon", [](const py::object& plant, const py::object& spec) {
-    const Automaton p = one_of(plant, "plant"), s = one_of(spec, "spec");
-    py::gil_scoped_release release;
-    return sv::supcon(p, s);
+    return supcon_of(one_of(plant, "plant"), one_of(spec, "spec"));
   }, py::arg("plant"), py::arg("spec"), "The supremal controllable nonblocking supervisor (empty when none exists).");
   m.def("supcon_normal", [](const py::object& plant, const py::object& spec) {
-    const Automaton p = one_of(plant, "plant"), s = one_of(spec, "spec");
-    py::gil_scoped_release release;
-    return sv::supcon_normal(p, s);
+    return supcon_normal_of(one_of(plant, "plant"), one_of(spec, "spec"));
   }, py::arg("plant"), py::arg("spec"), "The supremal controllable, normal and nonblocking supervisor (uo events).");
   m.def("synthesize", [](const py::object& plant, const py::object& spec) {
     const Automaton p = one_of(plant, "plant"), s = one_of(spec, "spec");
-    const bool normal = !unobservable_of(p, s).empty();
-    py::gil_scoped_release release;
-    return normal ? sv::supcon_normal(p, s) : sv::supcon(p, s);
+    return unobservable_of(p, s).empty() ? supcon_of(p, s) : supcon_normal_of(p, s);
   }, py::arg("plant"), py::arg("spec"),
         "`swarmcheck fsm synth`: the product of each list, then supcon, or supcon_normal when an event is uo.");
   m.def("is_controllable", [](const py::object& plant, const py::object& spec) {
     const Automaton p = one_of(plant, "plant"), s = one_of(spec, "spec");
-    py::gil_scoped_release release;
-    return sv::is_controllable(p, s);
+    return budgeted([&](WorkBudget& budget) {
+      return is::is_controllable(is::compile(p), is::compile(s), budget, is::PeakModel{});
+    });
   }, py::arg("plant"), py::arg("spec"), "Is spec controllable with respect to plant?");
   m.def("control_report", [](const py::object& plant, const py::object& sup) {
     const Automaton p = one_of(plant, "plant"), s = one_of(sup, "sup");
-    sv::ControlReport r;
-    {
-      py::gil_scoped_release release;
-      r = sv::control_report(p, s);
-    }
+    const sv::ControlReport r = budgeted([&](WorkBudget& budget) {
+      return is::control_report(is::compile(p), is::compile(s), budget, is::PeakModel{});
+    });
     py::dict d;
     d["plant_states"] = p.states.size();
     d["supervisor_states"] = s.states.size();
@@ -194,11 +234,9 @@ states[0] is the initial state.)")
         "loop nonblocking? With shortest witnesses (lists of events).");
   m.def("observability", [](const py::object& plant, const py::object& spec) {
     const Automaton p = one_of(plant, "plant"), s = one_of(spec, "spec");
-    sv::ObservabilityReport r;
-    {
-      py::gil_scoped_release release;
-      r = sv::observability(p, s);
-    }
+    const sv::ObservabilityReport r = budgeted([&](WorkBudget& budget) {
+      return is::observability(is::compile(p), is::compile(s), budget, is::PeakModel{}, is::PeakModel{});
+    });
     py::dict d;
     d["unobservable_events"] = unobservable_of(p, s);
     d["observable"] = r.observable;
@@ -209,20 +247,16 @@ states[0] is the initial state.)")
   }, py::arg("plant"), py::arg("spec"),
         "`swarmcheck fsm observable --json` (without the files): with two words that look alike as a witness.");
   m.def("language_inclusion", [](const Automaton& a, const Automaton& b) {
-    sv::Inclusion i;
-    {
-      py::gil_scoped_release release;
-      i = sv::language_inclusion(a, b);
-    }
-    return inclusion_dict(i);
+    return inclusion_dict(budgeted([&](WorkBudget& budget) {
+      return is::language_inclusion(is::compile(a), is::compile(b), budget, is::PeakModel{});
+    }));
   }, py::arg("a"), py::arg("b"), "L(a) in L(b) and Lm(a) in Lm(b), each with its shortlex-least witness.");
   m.def("compare", [](const Automaton& a, const Automaton& b) {
-    sv::Inclusion ab, ba;
-    {
-      py::gil_scoped_release release;
-      ab = sv::language_inclusion(a, b);
-      ba = sv::language_inclusion(b, a);
-    }
+    const auto [ab, ba] = budgeted([&](WorkBudget& budget) {
+      const is::Fsm fa = is::compile(a), fb = is::compile(b);
+      return std::make_pair(is::language_inclusion(fa, fb, budget, is::PeakModel{}),
+                            is::language_inclusion(fb, fa, budget, is::PeakModel{}));
+    });
     py::dict d, da, db;
     da["states"] = a.states.size();
     db["states"] = b.states.size();

@@ -15,9 +15,12 @@ struct Interrupted {};
 
 class SignalPoll {
  public:
-  // Called after every step, the GIL released.
+  // The clock is read every `every` calls (a step: 64; a construction's budget check, made every
+  // few thousand states: 1).
+  explicit SignalPoll(uint64_t every = 64) : every_(every) {}
+  // Called after every step (or check), the GIL released.
   void operator()() {
-    if (++calls_ % 64 != 0) return;
+    if (++calls_ % every_ != 0) return;
     const auto now = std::chrono::steady_clock::now();
     if (now - last_ < std::chrono::milliseconds(50)) return;
     last_ = now;
@@ -26,6 +29,7 @@ class SignalPoll {
   }
 
  private:
+  uint64_t every_;
   uint64_t calls_ = 0;
   std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
 };
@@ -33,8 +37,8 @@ class SignalPoll {
 // Runs f() with the GIL released, polling for signals through the SignalPoll it is given; a
 // signal handler's exception (KeyboardInterrupt) is raised from here, with the GIL held.
 template <class F>
-auto without_gil(F&& f) {
-  SignalPoll poll;
+auto without_gil(F&& f, uint64_t every = 64) {
+  SignalPoll poll(every);
   try {
     pybind11::gil_scoped_release release;
     return f(poll);

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <functional>
 #include <string>
 
 #include "spec/util/input_error.hpp"
@@ -70,8 +71,13 @@ class WorkBudget {
 
   // `where` names the construction's inputs, `done()` says how far it got ("the product stopped
   // after exploring 4096 states (10000 found)"); called only when a limit stops it.
+  // Called at every check, before the limits are: it may throw to stop the construction where a
+  // limit would (the Python package raises Ctrl-C's KeyboardInterrupt through it). None by default.
+  void set_interrupt(std::function<void()> interrupt) { interrupt_ = std::move(interrupt); }
+
   template <class Done>
   void check(const std::string& where, double estimate_bytes, const Done& done) {
+    if (interrupt_) interrupt_();
     peak_ = std::max(peak_, estimate_bytes);
     if (memory_bytes_ != 0 && estimate_bytes > static_cast<double>(memory_bytes_))
       throw BudgetExceeded(where, done() + ": about " + format_bytes(estimate_bytes) + " and growing, over the limit of " +
@@ -92,6 +98,7 @@ class WorkBudget {
   double time_limit_s_ = 0;
   Clock::time_point deadline_ = Clock::time_point::max();
   double peak_ = 0;
+  std::function<void()> interrupt_;
 };
 
 // The limits one command works within.
