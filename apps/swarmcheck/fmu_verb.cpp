@@ -9,6 +9,7 @@
 #include <memory>
 #include <optional>
 
+#include "apps/swarmcheck/robot_options.hpp"
 #include "apps/swarmcheck/verb.hpp"
 #include "fmi/export/fmu_export.hpp"
 #include "impl/io/atomic_file.hpp"
@@ -25,6 +26,7 @@ struct FmuExportOptions {
   std::string intocps;
   std::string handshake = "flag";
   std::string interface = "swarmcheck";
+  RobotChoiceOptions robots_choice;
 };
 
 int fmu_export(const FmuExportOptions& o) {
@@ -40,15 +42,30 @@ int fmu_export(const FmuExportOptions& o) {
                    : interface == fmi::Interface::thesis ? fmi::thesis_interface_scenario()
                                                           : ex::default_scenario();
   if (o.robots) s = fmi::scenario_with_robots(s, *o.robots);
+  ex::ScenarioOverrides over;
+  apply_robot_choices(o.robots_choice, "", over);
+  if (interface == fmi::Interface::thesis && (over.controller || over.body))
+    throw InputError(over.controller ? "--controller" : "--body",
+                     "the thesis interface's Controller and Body are the thesis's (its UController's law, the 20-sim "
+                     "body); --controller and --body go with --interface swarmcheck");
+  s = ex::with_overrides(ex::ValidScenario(s), over);
   if (!o.intocps.empty()) {
-    if (interface == fmi::Interface::thesis)
-      throw InputError("--interface thesis", "--intocps writes swarmcheck's multi-model; the thesis interface exports "
-                                             "one FMU at a time (environment) so far");
+    if (interface == fmi::Interface::thesis) {
+      const fmi::ThesisProject p = fmi::write_intocps_thesis(s, o.intocps);
+      fmt::print("wrote {}/: FMUs/Environment.fmu, UController.fmu, Body_Block1..{}.fmu, {}, {} (thesis A's published "
+                 "INTO-CPS project, swarmcheck's FMUs)\n",
+                 o.intocps, s.robots.size(), std::filesystem::relative(p.multimodel, o.intocps).string(),
+                 std::filesystem::relative(p.config, o.intocps).string());
+      fmt::print("run it: swarmcheck cosim {} --config {} -o outputs.csv\n", p.multimodel, p.config);
+      return 0;
+    }
     for (const char* name : {"Environment.fmu", "Controller.fmu", "Body.fmu", "multimodel.json", "coe.json"})
       io::refuse_output_that_is_an_input((std::filesystem::path(o.intocps) / name).string(), {o.scenario_path});
     fmi::write_intocps(s, o.handshake == "epoch" ? fmi::Handshake::epoch : fmi::Handshake::flag, o.intocps);
-    fmt::print("wrote {}/: Environment.fmu, Controller.fmu, Body.fmu, multimodel.json, coe.json ({} robots, {} handshake)\n",
-               o.intocps, s.robots.size(), o.handshake);
+    fmt::print("wrote {}/: Environment.fmu, Controller.fmu, Body.fmu, multimodel.json, coe.json ({} robots, {} handshake, "
+               "{} controller, {} body)\n",
+               o.intocps, s.robots.size(), o.handshake, json_io::enum_to_string(s.controller),
+               json_io::enum_to_string(s.body.kind));
     fmt::print("run it: swarmcheck cosim {}/multimodel.json --config {}/coe.json -o outputs.csv\n", o.intocps, o.intocps);
     return 0;
   }
@@ -56,8 +73,10 @@ int fmu_export(const FmuExportOptions& o) {
                          : o.kind == "controller" ? fmi::Kind::controller
                                                   : fmi::Kind::body;
   io::refuse_output_that_is_an_input(o.output, {o.scenario_path});
-  fmi::write_fmu(fmi::fmu_setup(kind, s, interface), o.output);
-  fmt::print("wrote {} ({}, FMI 2.0 co-simulation, {} interface{})\n", o.output, fmi::model_identifier(kind), o.interface,
+  const fmi::FmuSetup setup = fmi::fmu_setup(kind, s, interface);
+  fmi::write_fmu(setup, o.output);
+  fmt::print("wrote {} ({}, {}, FMI 2.0 co-simulation, {} interface{})\n", o.output, fmi::model_identifier(kind),
+             fmi::model_name(setup), o.interface,
              kind == fmi::Kind::environment ? fmt::format(", {} robots, {} obstacle cells", s.robots.size(), s.obstacles.size())
                                             : std::string());
   return 0;
@@ -80,13 +99,16 @@ void add_fmu_verb(CLI::App& app, int& exit_code) {
                   "Robots N (the Environment's variables are generated for N); the scenario's own robots when it "
                   "has N, else N spread over its free cells");
   cmd->add_option("--intocps", opts->intocps,
-                  "Write Environment.fmu, Controller.fmu, Body.fmu, multimodel.json and coe.json into DIR");
+                  "Write Environment.fmu, Controller.fmu, Body.fmu, multimodel.json and coe.json into DIR; with "
+                  "--interface thesis, thesis A's published INTO-CPS project (FMUs/, Multi-models/mm-new/mm.json, "
+                  "its co-sim/coe.json) with swarmcheck's FMUs");
   cmd->add_option("--interface", opts->interface,
                   "swarmcheck (its variables) | thesis (the variables, Real handshake and file names of thesis A's "
                   "published FMUs, to drop into its INTO-CPS project; their start values and rule set thesis unless "
                   "--scenario says)")
       ->check(CLI::IsMember({"swarmcheck", "thesis"}))
       ->capture_default_str();
+  add_robot_options(cmd, opts->robots_choice);
   cmd->add_option("--handshake", opts->handshake, "flag (the thesis's) | epoch, for --intocps")
       ->check(CLI::IsMember({"flag", "epoch"}))
       ->capture_default_str();

@@ -77,6 +77,21 @@ std::string library_bytes() {
                      static_cast<std::size_t>(swarmcheck_fmu_so_end - swarmcheck_fmu_so_begin));
 }
 
+// The end of a run of s: the library's completion step for this scenario (the same system), else
+// max_steps, as the engine's clock reads it after that many steps: the repeated sum of step_size
+// (the engine steps while t + h <= endTime, t by repeated addition, so this end gives exactly
+// that many steps; k * h may fall below the sum and lose the last step).
+double completion_end_time(const ex::Scenario& s) {
+  ex::Scenario as_cosim = s;
+  as_cosim.mode = ex::Mode::cosim;
+  Exploration run(as_cosim, ExplorationOptions{});
+  while (!run.done()) run.step();
+  const int64_t steps = run.completion_step().value_or(s.max_steps);
+  double t = 0.0;
+  for (int64_t k = 0; k < steps; ++k) t = t + s.params.step_size;
+  return t;
+}
+
 }  // namespace
 
 ex::Scenario scenario_with_robots(const ex::Scenario& s, int32_t n) {
@@ -127,16 +142,16 @@ FmuSetup fmu_setup(Kind kind, const ex::Scenario& s, Interface interface) {
   if (s.seed > static_cast<uint64_t>(INT32_MAX))
     throw InputError("seed", "the FMU's seed parameter is an FMI Integer: expected at most 2147483647, got " +
                                  std::to_string(s.seed));
-  if (interface == Interface::thesis && kind != Kind::environment)
-    throw InputError("--interface thesis",
-                     std::string("the thesis interface's ") + (kind == Kind::controller ? "Controller" : "Body") +
-                         " runs the thesis's " + (kind == Kind::controller ? "controller" : "20-sim body") +
-                         ", which swarmcheck's spec does not have yet: only its Environment can be exported");
   FmuSetup setup;
   setup.kind = kind;
   setup.interface = interface;
   setup.scenario = s;
   setup.scenario.mode = ex::Mode::cosim;
+  if (interface == Interface::thesis) {
+    // The thesis's Controller and Body: its published UController's law and the 20-sim body.
+    setup.scenario.controller = ex::ControllerKind::thesis;
+    setup.scenario.body.kind = ex::BodyKind::intocps;
+  }
   if (kind == Kind::environment) {
     constexpr int32_t kThesisObstacleSlots = 10;   // ox_1..ox_10 in the thesis's Environment
     setup.robots = static_cast<int32_t>(s.robots.size());
@@ -156,6 +171,8 @@ std::string fmu_archive(const FmuSetup& setup) {
 void write_fmu(const FmuSetup& setup, const std::string& path) { io::write_file_atomically(path, fmu_archive(setup)); }
 
 void write_intocps(const ex::Scenario& s, Handshake handshake, const std::string& dir, std::optional<double> end_time_s) {
+  if (handshake == Handshake::epoch && s.controller == ex::ControllerKind::thesis)
+    throw InputError("--handshake", "the thesis controller has the flag handshake only (its published UController)");
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
   if (ec) throw InputError(dir, "cannot create the folder: " + ec.message());
@@ -194,8 +211,9 @@ void write_intocps(const ex::Scenario& s, Handshake handshake, const std::string
     connections[body + "robot_theta"] = Json::array({ctrl + "phi"});
     on_destination.push_back(ctrl + "onDestinationInput");
     epoch.push_back(ctrl + "epochInput");
-    parameters[body + "x0"] = s.robots[r][0];
-    parameters[body + "y0"] = s.robots[r][1];
+    const bool intocps = s.body.kind == ex::BodyKind::intocps;
+    parameters[body + (intocps ? "initial_position[0]" : "x0")] = s.robots[r][0];
+    parameters[body + (intocps ? "initial_position[1]" : "y0")] = s.robots[r][1];
     parameters[ctrl + "handshake"] = hs;
   }
   connections[env + "onDestinationOutput"] = on_destination;
@@ -203,26 +221,112 @@ void write_intocps(const ex::Scenario& s, Handshake handshake, const std::string
   mm["connections"] = connections;
   mm["parameters"] = parameters;
 
-  // The end: the library's completion step for this scenario (the same system), else max_steps,
-  // as the engine's clock reads it after that many steps: the repeated sum of step_size (the
-  // engine steps while t + h <= endTime, t by repeated addition, so this end gives exactly that
-  // many steps; k * h may fall below the sum and lose the last step).
-  if (!end_time_s) {
-    ex::Scenario as_cosim = s;
-    as_cosim.mode = ex::Mode::cosim;
-    Exploration run(as_cosim, ExplorationOptions{});
-    while (!run.done()) run.step();
-    const int64_t steps = run.completion_step().value_or(s.max_steps);
-    double t = 0.0;
-    for (int64_t k = 0; k < steps; ++k) t = t + s.params.step_size;
-    end_time_s = t;
-  }
+  if (!end_time_s) end_time_s = completion_end_time(s);
   Json coe;
   coe["startTime"] = 0.0;
   coe["endTime"] = *end_time_s;
   coe["algorithm"] = Json::object({{"type", "fixed-step"}, {"size", s.params.step_size}});
   io::write_file_atomically(in("coe.json"), coe.dump(2) + "\n");
   io::write_file_atomically(in("multimodel.json"), mm.dump(2) + "\n");
+}
+
+ThesisProject write_intocps_thesis(const ex::Scenario& scenario, const std::string& dir, std::optional<double> end_time_s) {
+  ex::Scenario s = scenario;
+  s.mode = ex::Mode::cosim;
+  s.controller = ex::ControllerKind::thesis;
+  s.body.kind = ex::BodyKind::intocps;
+  namespace fs = std::filesystem;
+  const fs::path root(dir);
+  ThesisProject p;
+  p.multimodel = (root / "Multi-models" / "mm-new" / "mm.json").string();
+  p.config = (root / "Multi-models" / "mm-new" / "co-sim" / "coe.json").string();
+  const fs::path fmus = root / "FMUs";
+  const std::size_t n = s.robots.size();
+  std::vector<std::string> bodies;
+  for (std::size_t r = 0; r < n; ++r) bodies.push_back("Body_Block" + std::to_string(r + 1) + ".fmu");
+  std::vector<std::string> outputs{(fmus / "Environment.fmu").string(), (fmus / "UController.fmu").string()};
+  for (const std::string& b : bodies) outputs.push_back((fmus / b).string());
+  for (const auto& folder : {fmus, fs::path(p.multimodel).parent_path(), fs::path(p.config).parent_path()}) {
+    std::error_code ec;
+    fs::create_directories(folder, ec);
+    if (ec) throw InputError(folder.string(), "cannot create the folder: " + ec.message());
+  }
+  for (const std::string& out : outputs) io::check_output_path(out);
+  io::check_output_path(p.multimodel);
+  io::check_output_path(p.config);
+  if (!end_time_s) end_time_s = completion_end_time(s);
+  // The FMUs (the four bodies are copies of one, as the thesis ships them), then the configuration,
+  // then the multi-model last: a project with it is complete.
+  write_fmu(fmu_setup(Kind::environment, s, Interface::thesis), outputs[0]);
+  write_fmu(fmu_setup(Kind::controller, s, Interface::thesis), outputs[1]);
+  const std::string body = fmu_archive(fmu_setup(Kind::body, s, Interface::thesis));
+  for (std::size_t r = 0; r < n; ++r) io::write_file_atomically(outputs[2 + r], body);
+
+  using json_io::Json;
+  Json mm;
+  Json fmu_files = Json::object({{"{Environment}", "Environment.fmu"}, {"{Controller}", "UController.fmu"}});
+  for (std::size_t r = 0; r < n; ++r) fmu_files["{Robot" + std::to_string(r + 1) + "}"] = bodies[r];
+  mm["fmus"] = fmu_files;
+  const std::string env = "{Environment}.EnvironmentInstance.";
+  Json connections = Json::object(), parameters = Json::object();
+  Json told = Json::array();
+  for (std::size_t r = 0; r < n; ++r) {
+    const std::string k = std::to_string(r + 1);
+    const std::string ctrl = "{Controller}.ControllerInstance" + k + ".";
+    const std::string robot = "{Robot" + k + "}.Robot" + k + "Instance.";
+    connections[env + "xDesired" + k] = Json::array({ctrl + "xDesired"});
+    connections[env + "yDesired" + k] = Json::array({ctrl + "yDesired"});
+    connections[ctrl + "onDestinationOutput"] = Json::array({env + "onDestination" + k + "Input"});
+    connections[ctrl + "servoLeft"] = Json::array({robot + "servo_left_input"});
+    connections[ctrl + "servoRight"] = Json::array({robot + "servo_right_input"});
+    connections[robot + "robot_x"] = Json::array({env + "x_" + k, ctrl + "x"});
+    connections[robot + "robot_y"] = Json::array({env + "y_" + k, ctrl + "y"});
+    connections[robot + "robot_theta"] = Json::array({ctrl + "phi"});
+    told.push_back(ctrl + "onDestinationInput");
+    parameters[env + "lx_" + k] = s.robots[r][0];
+    parameters[env + "ly_" + k] = s.robots[r][1];
+    parameters[robot + "initial_position[0]"] = s.robots[r][0];
+    parameters[robot + "initial_position[1]"] = s.robots[r][1];
+    for (const ex::IntocpsBodyParameter& d : ex::intocps_body_parameters())
+      if (d.initial_position_index < 0 || d.initial_position_index == 2) {
+        const double v = ex::intocps_parameter_value(s.body.intocps, d);
+        if (v != ex::intocps_parameter_value(ex::IntocpsBodyParams{}, d)) parameters[robot + std::string(d.name)] = v;
+      }
+  }
+  connections[env + "onDestinationOutput"] = told;
+  mm["connections"] = connections;
+  parameters[env + "mapSize"] = s.map_size;
+  parameters[env + "nRobots"] = static_cast<int32_t>(n);
+  parameters[env + "nObstacles"] = static_cast<int32_t>(s.obstacles.size());
+  for (std::size_t k = 0; k < s.obstacles.size(); ++k) {
+    parameters[env + "ox_" + std::to_string(k + 1)] = s.obstacles[k][0];
+    parameters[env + "oy_" + std::to_string(k + 1)] = s.obstacles[k][1];
+  }
+  mm["parameters"] = parameters;
+  // The published coe.json's keys, with this run's end.
+  Json coe;
+  coe["startTime"] = 0;
+  coe["endTime"] = *end_time_s;
+  coe["multimodel_path"] = "Multi-models/mm-new/mm.json";
+  coe["algorithm"] = Json::object({{"type", "fixed-step"}, {"size", s.params.step_size}});
+  coe["liveGraphColumns"] = 1;
+  coe["liveGraphVisibleRowCount"] = 1;
+  coe["graphs"] = Json::array();
+  coe["livestreamInterval"] = 0;
+  coe["logVariables"] = Json::object();
+  coe["visible"] = false;
+  coe["loggingOn"] = false;
+  coe["overrideLogLevel"] = nullptr;
+  coe["enableAllLogCategoriesPerInstance"] = false;
+  coe["postProcessingScript"] = "";
+  coe["parallelSimulation"] = false;
+  coe["stabalizationEnabled"] = false;
+  coe["global_absolute_tolerance"] = 0;
+  coe["global_relative_tolerance"] = 0.01;
+  coe["simulationProgramDelay"] = true;
+  io::write_file_atomically(p.config, coe.dump(2) + "\n");
+  io::write_file_atomically(p.multimodel, mm.dump(2) + "\n");
+  return p;
 }
 
 }  // namespace swarmcheck::fmi

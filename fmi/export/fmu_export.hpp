@@ -45,4 +45,16 @@ enum class Handshake { flag, epoch };
 void write_intocps(const exploration::Scenario& s, Handshake handshake, const std::string& dir,
                    std::optional<double> end_time_s = std::nullopt);
 
+// Thesis A's published INTO-CPS project laid out in `dir` with swarmcheck's FMUs in place of the
+// thesis's (`fmu export --intocps DIR --interface thesis`): FMUs/Environment.fmu, UController.fmu,
+// Body_Block1..N.fmu (thesis interface: the thesis controller and the intocps body);
+// Multi-models/mm-new/mm.json with the published FMU keys, instance names, connections and
+// parameters; Multi-models/mm-new/co-sim/coe.json with the published configuration's keys. The
+// end as write_intocps's.
+struct ThesisProject {
+  std::string multimodel, config;   // the paths written
+};
+ThesisProject write_intocps_thesis(const exploration::Scenario& s, const std::string& dir,
+                                   std::optional<double> end_time_s = std::nullopt);
+
 }  // namespace swarmcheck::fmi

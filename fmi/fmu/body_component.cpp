@@ -35,7 +35,7 @@ class BodyComponent final : public Component {
     out_ = {params_.x0, params_.y0, params_.theta0};
   }
 
-  void step(double h_s) override {
+  void step(double /*t_s*/, double h_s) override {
     if (std::isnan(in_.servo_left_input) || std::isnan(in_.servo_right_input))
       throw FmuError("servo_left_input and servo_right_input must be numbers, got NaN");
     if (ex::body_stays({out_.robot_x, out_.robot_y, out_.robot_theta}, in_.servo_left_input, in_.servo_right_input))

@@ -48,7 +48,11 @@ std::string model_name(Kind k) {
 const char* to_string(Interface i) { return i == Interface::thesis ? "thesis" : "swarmcheck"; }
 
 std::string model_name(const FmuSetup& s) {
-  return model_name(s.kind) + (s.interface == Interface::thesis ? " (thesis interface)" : "");
+  if (s.interface == Interface::thesis) return model_name(s.kind) + " (thesis interface)";
+  if (s.kind == Kind::body && s.scenario.body.kind == exploration::BodyKind::intocps) return model_name(s.kind) + " (intocps)";
+  if (s.kind == Kind::controller && s.scenario.controller == exploration::ControllerKind::thesis)
+    return model_name(s.kind) + " (thesis)";
+  return model_name(s.kind);
 }
 
 void put_state_u64(std::vector<uint8_t>& out, uint64_t v) { put_u64(out, v); }
@@ -130,8 +134,6 @@ FmuSetup setup_from_json(const std::string& text) {
   const std::string interface = j.value("interface", "swarmcheck");
   if (interface == "thesis") s.interface = Interface::thesis;
   else if (interface != "swarmcheck") throw FmuError("resources/swarmcheck-fmu.json: interface: expected swarmcheck or thesis");
-  if (s.interface == Interface::thesis && s.kind != Kind::environment)
-    throw FmuError("resources/swarmcheck-fmu.json: the thesis interface has an Environment only (so far)");
   if (!j.contains("robots") || !j["robots"].is_number_integer() || !j.contains("obstacles") ||
       !j["obstacles"].is_number_integer() || !j.contains("scenario"))
     throw FmuError("resources/swarmcheck-fmu.json: robots, obstacles (integers) and scenario expected");
@@ -157,8 +159,14 @@ std::unique_ptr<Component> make_component(const FmuSetup& setup) {
     case Kind::environment:
       c = setup.interface == Interface::thesis ? make_thesis_environment_component(setup) : make_environment_component(setup);
       break;
-    case Kind::controller: c = make_controller_component(setup); break;
-    case Kind::body: c = make_body_component(setup); break;
+    case Kind::controller:
+      c = setup.interface == Interface::thesis ? make_thesis_controller_component(setup) : make_controller_component(setup);
+      break;
+    case Kind::body:
+      c = setup.interface == Interface::thesis || setup.scenario.body.kind == exploration::BodyKind::intocps
+              ? make_intocps_body_component(setup)
+              : make_body_component(setup);
+      break;
   }
   c->defaults();
   return c;

@@ -59,8 +59,10 @@ class Component {
   const VariableTable& table() const { return table_; }
   // fmi2ExitInitializationMode: build the model from the parameters (FmuError if they are bad).
   virtual void initialize() = 0;
-  // fmi2DoStep over h seconds (FmuError if the step cannot be taken).
-  virtual void step(double h_s) = 0;
+  // fmi2DoStep from the communication point t over h seconds (FmuError if the step cannot be taken).
+  virtual void step(double t_s, double h_s) = 0;
+  // fmi2SetupExperiment's start time (before initialize()).
+  virtual void start_at(double /*t_s*/) {}
   // The start values of every variable (fmi2Instantiate, fmi2Reset).
   virtual void defaults() = 0;
   // Brings variables computed only when read up to date (before any fmi2Get and state save).

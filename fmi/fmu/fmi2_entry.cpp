@@ -244,6 +244,7 @@ FMI2_EXPORT fmi2Status fmi2SetupExperiment(fmi2Component c, fmi2Boolean, fmi2Rea
                                            fmi2Real) {
   return guarded(c, "fmi2SetupExperiment", {Phase::instantiated}, [&](Instance& in) {
     in.time_s = startTime;
+    in.component->start_at(startTime);
     return fmi2OK;
   });
 }
@@ -432,7 +433,7 @@ FMI2_EXPORT fmi2Status fmi2GetRealOutputDerivatives(fmi2Component c, const fmi2V
 FMI2_EXPORT fmi2Status fmi2DoStep(fmi2Component c, fmi2Real t, fmi2Real h, fmi2Boolean) {
   return guarded(c, "fmi2DoStep", {Phase::stepping}, [&](Instance& in) {
     if (!(h > 0)) throw FmuError("communicationStepSize must be > 0");
-    in.component->step(h);
+    in.component->step(t, h);
     in.time_s = t + h;
     return fmi2OK;
   });

@@ -11,7 +11,9 @@ namespace swarmcheck::fmi {
 std::unique_ptr<Component> make_environment_component(const FmuSetup& setup);
 std::unique_ptr<Component> make_thesis_environment_component(const FmuSetup& setup);
 std::unique_ptr<Component> make_controller_component(const FmuSetup& setup);
+std::unique_ptr<Component> make_thesis_controller_component(const FmuSetup& setup);
 std::unique_ptr<Component> make_body_component(const FmuSetup& setup);
+std::unique_ptr<Component> make_intocps_body_component(const FmuSetup& setup);
 
 // Little-endian 8-byte fields of a saved state (component.cpp).
 void put_state_u64(std::vector<uint8_t>& out, uint64_t v);

@@ -11,8 +11,15 @@ namespace {
 
 using text::xml_escape;
 
-const char* description_of(Kind k) {
-  switch (k) {
+const char* description_of(const FmuSetup& setup) {
+  const bool thesis = setup.interface == Interface::thesis;
+  if (setup.kind == Kind::body && (thesis || setup.scenario.body.kind == exploration::BodyKind::intocps))
+    return "Thesis A's 20-sim Body_Block: motors with inductance and a PI speed loop, chassis mass and inertia, "
+           "lateral wheel slip, RK4 at 1 ms (swarmcheck spec/exploration/body_intocps.hpp)";
+  if (setup.kind == Kind::controller && (thesis || setup.scenario.controller == exploration::ControllerKind::thesis))
+    return "Thesis A's published UController, as its binary computes "
+           "(swarmcheck spec/exploration/controller_thesis.hpp)";
+  switch (setup.kind) {
     case Kind::environment:
       return "Stigmergic exploration Environment: grid map, repulsive pheromone, exploration percentage "
              "(swarmcheck spec/exploration/environment_step.hpp)";
@@ -36,7 +43,7 @@ std::string model_description_xml(const FmuSetup& setup, const std::string& tool
   x += fmt::format(
       "<fmiModelDescription fmiVersion=\"2.0\" modelName=\"{}\" guid=\"{}\" description=\"{}\" version=\"{}\" "
       "generationTool=\"swarmcheck {}\" variableNamingConvention=\"flat\" numberOfEventIndicators=\"0\">\n",
-      model_name(setup), fmu_guid(setup), xml_escape(description_of(setup.kind)), xml_escape(tool_version),
+      model_name(setup), fmu_guid(setup), xml_escape(description_of(setup)), xml_escape(tool_version),
       xml_escape(tool_version));
   x += fmt::format(
       "  <CoSimulation modelIdentifier=\"{}\" needsExecutionTool=\"false\" "

@@ -97,6 +97,13 @@ std::string describe(std::string_view kind, const std::string& member, std::opti
       {"thesis environment", "stepCount", "the thesis's step counter at start (swarmcheck's Environment: 0)"},
       {"thesis environment", "onDestinationOutput", "1.0: new waypoints were issued in this step (the controllers accept them)"},
       {"thesis environment", "onDestination__Input", "1.0: robot #'s controller is idle at its waypoint"},
+      {"thesis controller", "maneuver", "1 orient, 2 drive: the start maneuver (2, as the thesis's init() sets it), then the current"},
+      {"thesis controller", "beta", "error on the robot orientation, rad: at start, then the current"},
+      {"thesis controller", "rho", "distance to the waypoint, m (of the last step)"},
+      {"thesis controller", "v", "linear speed command (of the last step)"},
+      {"thesis controller", "w", "angular speed command (of the last step)"},
+      {"thesis controller", "onDestinationInput", "the Environment's onDestinationOutput: 1.0 when it issued new waypoints"},
+      {"thesis controller", "onDestinationOutput", "1.0: the robot is at its waypoint and idle"},
   };
   const auto find = [&](std::string_view in) -> const Text* {
     for (const Text& d : kDescriptions)
@@ -159,6 +166,18 @@ void VariableTable::attributes(Variable& v, Role role) {
       v.causality = Causality::local, v.variability = changing, v.initial = Initial::calculated;
       break;
   }
+}
+
+void VariableTable::bind_named(double& value, std::string name, Role role, std::string description) {
+  Variable v;
+  v.name = std::move(name);
+  v.value_reference = static_cast<uint32_t>(vars_.size());
+  v.type = BaseType::real;
+  v.real = &value;
+  attributes(v, role);
+  description_.push_back(std::move(description));
+  slots_.push_back(Slot{&value, v.type, v.causality});
+  vars_.push_back(std::move(v));
 }
 
 const Variable* VariableTable::find(const std::string& name) const {

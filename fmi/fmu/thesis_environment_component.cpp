@@ -67,7 +67,7 @@ class ThesisEnvironmentComponent final : public Component {
     refresh();
   }
 
-  void step(double h_s) override {
+  void step(double /*t_s*/, double h_s) override {
     if (!run_.started()) throw FmuError("doStep before the Environment was initialised");
     const int64_t steps = environment_steps_in(h_s, params_.step_size);
     if (run_.state().tick + steps > ex::kStepsMax) throw FmuError("doStep: the Environment has taken its last step (2^31 - 1)");

@@ -4,6 +4,9 @@
 // 1.0), causality for causality, so that its multi-model runs with swarmcheck's FMUs in place of
 // its own. Declared as ports.hpp's are (the model description and fmi2Get/Set derive from them).
 //
+// The Controller is UController.fmu's variables with the thesis controller's law; the Body is
+// Body_Block's with the intocps body (both for any number of instances: no global state).
+//
 // The Environment (thesis Environment.fmu, the PVSio-web FMU): N robots and M obstacle slots
 // fixed at export, of which the first nRobots and nObstacles take part; plus four parameters the
 // thesis's code fixes and swarmcheck's rules read (cellSize, epsilon, rule, seed).
@@ -30,5 +33,21 @@ struct ThesisEnvironmentRobotOutputs {   // per robot
 };
 // Per robot lx_, ly_ and per obstacle ox_, oy_: ports.hpp's EnvironmentRobotParameters and
 // EnvironmentObstacleParameters.
+
+// The Controller (thesis UController.fmu, PVSio-web): every port Real; its state variables are
+// parameters as PVSio-web exports them (maneuver, beta: the start state; then the current values).
+struct ThesisControllerParameters {
+  BOOST_HANA_DEFINE_STRUCT(ThesisControllerParameters,
+      (double, k_beta), (double, k_v), (int32_t, maneuver), (double, beta), (double, rho), (double, v), (double, w));
+};
+struct ThesisControllerInputs {
+  BOOST_HANA_DEFINE_STRUCT(ThesisControllerInputs,
+      (double, x), (double, y), (double, phi), (double, xDesired), (double, yDesired), (double, onDestinationInput));
+};
+struct ThesisControllerOutputs {
+  BOOST_HANA_DEFINE_STRUCT(ThesisControllerOutputs, (double, servoLeft), (double, servoRight), (double, onDestinationOutput));
+};
+// The Body (thesis Body_Block1..4.fmu, 20-sim): the intocps body's variables, named in
+// intocps_body_component.cpp from spec/exploration/body_intocps.hpp's parameter list.
 
 }  // namespace swarmcheck::fmi

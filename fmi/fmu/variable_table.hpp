@@ -73,6 +73,10 @@ class VariableTable {
     });
   }
 
+  // Binds one Real variable whose name is no C++ identifier (the Body_Block's
+  // `servo_left.friction.r`, `initial_position[0]`), with its description.
+  void bind_named(double& value, std::string name, Role role, std::string description);
+
   const std::vector<Variable>& variables() const { return vars_; }
   // What fmi2Get/Set need of a variable, compact (the hot path of every communication step).
   struct Slot {

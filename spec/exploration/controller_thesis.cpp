@@ -1,5 +1,6 @@
 #include "spec/exploration/controller_thesis.hpp"
 
+#include <cmath>
 #include <numbers>
 
 #include "spec/util/demand.hpp"
@@ -75,6 +76,32 @@ ControllerState thesis_controller_step(const ThesisControllerParams& p, const Co
        in.step_s});
   return ControllerState{n.driving ? 2 : 1, n.idle ? 1 : 0, n.beta_rad, n.servo_left, n.servo_right,
                          n.target_theta_rad};
+}
+
+}  // namespace swarmcheck::exploration
+
+namespace swarmcheck::exploration {
+
+ControllerLocals thesis_controller_locals(const ThesisControllerParams& p, const ControllerState& s,
+                                          const ControllerInputs& in) {
+  // The tick of thesis_controller_rule again, for what it does not return: rho, v, w (0 when the
+  // step was no tick). tests/exploration/controller_thesis_test.cpp checks that these v and w give
+  // the rule's servos.
+  if (in.on_destination_input == 1 || s.on_destination_output == 1) return {};
+  const double dx = in.pose.x_m - in.waypoint[0];
+  const double dy = in.pose.y_m - in.waypoint[1];
+  const bool was_driving = s.maneuver == 2;
+  const DeltaT<num::Concrete> fixed = atan2_fix_rule<num::Concrete>(DeltaT<num::Concrete>{dx, dy}, p.deadband_m);
+  const double beta1 = std::atan2(fixed.dy, fixed.dx) - in.pose.theta_rad + kThesisPi / 2;
+  const double beta = was_driving ? std::fabs(std::atan2(dy, dx) - in.pose.theta_rad + kThesisPi / 2) : beta1;
+  const bool driving = was_driving ? !(std::fabs(dx) + std::fabs(dy) < p.arrival_m) : std::fabs(beta1) < p.orient_tolerance_rad;
+  const double ux = was_driving ? dx : fixed.dx;
+  const double uy = was_driving ? dy : fixed.dy;
+  ControllerLocals l;
+  l.rho_m = std::sqrt(std::pow(ux, 2.0) + std::pow(uy, 2.0));
+  l.v = driving ? l.rho_m * p.k_v * (std::pow(l.rho_m, 2.0) * std::cos(beta) + beta * std::sin(beta)) : 0.0;
+  l.w = -p.k_beta * beta;
+  return l;
 }
 
 }  // namespace swarmcheck::exploration

@@ -57,4 +57,9 @@ ControllerState initial_thesis_controller();
 ControllerState thesis_controller_step(const ThesisControllerParams& p, const ControllerState& s,
                                        const ControllerInputs& in);
 
+// What thesis_controller_step(p, s, in) computed on the way: rho (m), v and w (all 0 when the step
+// was no tick): the UController FMU's rho, v and w.
+ControllerLocals thesis_controller_locals(const ThesisControllerParams& p, const ControllerState& s,
+                                          const ControllerInputs& in);
+
 }  // namespace swarmcheck::exploration

@@ -10,6 +10,7 @@
 
 #include "spec/exploration/body.hpp"
 #include "spec/exploration/controller.hpp"
+#include "spec/exploration/controller_thesis.hpp"
 #include "spec/exploration/handshake.hpp"
 
 using namespace swarmcheck::exploration;
@@ -199,4 +200,28 @@ TEST(Handshake, EnvironmentTableOfTheThesis) {
   EXPECT_FALSE(c.plan);
   EXPECT_EQ(c.next.flag, 0);
   EXPECT_EQ(c.next.on_destination_output, 1);
+}
+
+// The UController FMU's rho, v and w (thesis_controller_locals) are the ones its step used: the
+// servos they give, clamped as the thesis clamps, are the step's, bit for bit; and an idle step
+// or one the Environment's flag ends computes none.
+RC_GTEST_PROP(ThesisControllerLocals, TheirVAndWGiveTheStepsServosBitForBit, ()) {
+  using C = swarmcheck::num::Concrete;
+  const ThesisControllerParams p;
+  const auto coord = rc::gen::map(rc::gen::inRange(-3000, 3000), [](int k) { return k / 1000.0; });
+  const ControllerState s{*rc::gen::element(1, 2), *rc::gen::element(0, 0, 0, 1), 0.0, 0.0, 0.0, 0.0};
+  const ControllerInputs in{{*coord, *coord, *rc::gen::map(rc::gen::inRange(-7000, 7000), [](int k) { return k / 1000.0; })},
+                            {*coord, *coord}, *rc::gen::element(0, 0, 0, 1), 0.1};
+  const ControllerState next = thesis_controller_step(p, s, in);
+  const ControllerLocals l = thesis_controller_locals(p, s, in);
+  if (in.on_destination_input == 1 || s.on_destination_output == 1) {
+    RC_ASSERT(l.rho_m == 0.0 && l.v == 0.0 && l.w == 0.0);
+    return;
+  }
+  const double r = p.wheel_radius_m, wd = p.wheel_distance_m;
+  const double left = thesis_clamp_rule<C>((1.0 / r) * l.v + (wd / (2.0 * r)) * l.w);
+  const double right = thesis_clamp_rule<C>(-((1.0 / r) * l.v - (wd / (2.0 * r)) * l.w));
+  RC_ASSERT(std::bit_cast<uint64_t>(left) == std::bit_cast<uint64_t>(next.servo_left));
+  RC_ASSERT(std::bit_cast<uint64_t>(right) == std::bit_cast<uint64_t>(next.servo_right));
+  RC_ASSERT(l.w == -p.k_beta * next.beta_rad);
 }

@@ -19,67 +19,11 @@
 #include "spec/exploration/body_intocps.hpp"
 #include "spec/exploration/robot.hpp"
 #include "spec/exploration/scenario.hpp"
+#include "tests/exploration/intocps_fixtures.hpp"
 
 using namespace swarmcheck::exploration;
+using namespace swarmcheck::testing;
 namespace {
-
-struct Fixture {
-  std::string name;
-  IntocpsBodyParams params;          // the FMU's defaults, then the fixture's parameters
-  std::vector<std::vector<double>> rows;   // k, time, u_L, u_R, then the 9 outputs
-};
-
-constexpr int kOutputs = 9;   // robot_x, robot_y, robot_theta, robot_z, wheels, encoders, energy
-
-Fixture read_fixture(const std::filesystem::path& path) {
-  Fixture f;
-  f.name = path.filename().string();
-  std::ifstream in(path);
-  std::string line;
-  while (std::getline(in, line)) {
-    if (line.rfind("# parameters:", 0) == 0) {
-      const std::string text = line.substr(line.find('{'));
-      const auto j = nlohmann::json::parse(text.substr(0, text.rfind('}') + 1));
-      for (const auto& [name, value] : j.items())
-        intocps_parameter_ref(f.params, *find_intocps_body_parameter(name)) = value.get<double>();
-    }
-    if (line.empty() || line[0] == '#' || line[0] == 'k') continue;
-    std::vector<double> row;
-    std::stringstream cells(line);
-    std::string cell;
-    while (std::getline(cells, cell, ',')) row.push_back(std::stod(cell));
-    f.rows.push_back(row);
-  }
-  return f;
-}
-
-std::vector<Fixture> fixtures() {
-  std::vector<Fixture> out;
-  for (const auto& e : std::filesystem::directory_iterator(SWARMCHECK_SOURCE_DIR "/tests/exploration/fixtures/intocps-body"))
-    if (e.path().extension() == ".csv") out.push_back(read_fixture(e.path()));
-  std::sort(out.begin(), out.end(), [](const Fixture& a, const Fixture& b) { return a.name < b.name; });
-  return out;
-}
-
-std::array<double, kOutputs> outputs_of(const IntocpsBodyOutputs& o) {
-  return {o.robot_x, o.robot_y, o.robot_theta, 0.0, o.wheel_left_rotation, o.wheel_right_rotation,
-          o.encoder_left_output, o.encoder_right_output, o.total_energy_used};
-}
-
-// The first output of `got` whose bits differ from row k of the fixture, as text; "" if none.
-std::string compare(const Fixture& f, std::size_t k, const std::array<double, kOutputs>& got) {
-  static const char* kNames[kOutputs] = {"robot_x", "robot_y", "robot_theta", "robot_z", "wheel_left_rotation",
-                                         "wheel_right_rotation", "encoder_left_output", "encoder_right_output",
-                                         "total_energy_used"};
-  for (int c = 0; c < kOutputs; ++c)
-    if (std::bit_cast<uint64_t>(got[c]) != std::bit_cast<uint64_t>(f.rows[k][4 + c])) {
-      std::ostringstream s;
-      s.precision(17);
-      s << f.name << " row " << k << " " << kNames[c] << ": got " << got[c] << ", the binary " << f.rows[k][4 + c];
-      return s.str();
-    }
-  return "";
-}
 
 TEST(IntocpsBody, SevenFixtureProfilesAreThere) {
   const std::vector<Fixture> all = fixtures();

@@ -232,6 +232,40 @@ TEST(FmiCli, ExportRefusesImpossibleRequestsWithStatusTwo) {
   EXPECT_FALSE(fs::exists(f.dir / "b.fmu"));
 }
 
+TEST(FmiCli, TheThesisInterfacesPublishedProjectRunsToCompletionWithTheEnginesColumns) {
+  Folder f;
+  const fs::path project = f.dir / "BIEA";
+  const auto e = run_binary(kBin, "fmu export --intocps " + project.string() + " --interface thesis");
+  ASSERT_EQ(e.status, 0) << e.out;
+  const fs::path mm = project / "Multi-models" / "mm-new";
+  const std::string csv = (f.dir / "outputs.csv").string();
+  const auto r = f.cosim((mm / "mm.json").string() + " --config " + (mm / "co-sim" / "coe.json").string() + " -o " + csv +
+                         " --json");
+  ASSERT_EQ(r.status, 0) << r.out;
+  const Json summary = Json::parse(r.out);
+  EXPECT_EQ(summary["eP"], 100.0);
+  EXPECT_EQ(summary["completion_step"], 20280);   // the thesis preset on the thesis's 10-cell map, 4 robots
+  std::ifstream in(csv);
+  std::string header;
+  std::getline(in, header);
+  EXPECT_EQ(std::count(header.begin(), header.end(), ','), 34) << header;   // the engine's 35 columns
+  EXPECT_EQ(header.rfind("time,step-size,{Controller}.ControllerInstance1.onDestinationOutput,", 0), 0u) << header;
+  EXPECT_TRUE(f.tmp_empty());
+}
+
+TEST(FmiCli, TheThesisInterfaceRefusesAnotherControllerOrBodyAndTheThesisControllerTheEpochHandshake) {
+  Folder f;
+  const auto a = run_binary(kBin, "fmu export controller --interface thesis --controller swarmcheck -o " +
+                                      (f.dir / "c.fmu").string());
+  EXPECT_EQ(a.status, 2);
+  EXPECT_NE(a.out.find("--controller"), std::string::npos) << a.out;
+  const auto b = run_binary(kBin, "fmu export --intocps " + (f.dir / "e").string() + " --preset thesis --handshake epoch");
+  EXPECT_EQ(b.status, 2);
+  EXPECT_NE(b.out.find("flag handshake only"), std::string::npos) << b.out;
+  EXPECT_FALSE(fs::exists(f.dir / "c.fmu"));
+  EXPECT_FALSE(fs::exists(f.dir / "e" / "multimodel.json"));
+}
+
 TEST(FmiCli, TheCommittedThesisMultiModelIsWhatExportWrites) {
   Folder f;   // exported the default scenario into mm/
   const std::string committed = std::string(SWARMCHECK_SOURCE_DIR) + "/scenarios/thesis/intocps/";

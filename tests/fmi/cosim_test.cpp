@@ -105,6 +105,22 @@ TEST(FmiCosim, JacobiFmuCosimulationUnderTheThesisRuleSetIsTheLibraryRunBitForBi
   expect_the_same_run(thesis_rule(), "thesis");
 }
 
+// The real system as the thesis ran it: the thesis's controller on the 20-sim body, in
+// swarmcheck's interface (`fmu export --intocps DIR --preset thesis`).
+TEST(FmiCosim, JacobiFmuCosimulationUnderTheThesisPresetIsTheLibraryRunBitForBit) {
+  exploration::Scenario s = thesis_rule();
+  s.controller = exploration::ControllerKind::thesis;
+  s.body.kind = exploration::BodyKind::intocps;
+  expect_the_same_run(s, "thesis-preset");
+}
+
+// The default controller on the 20-sim body (`--body intocps`).
+TEST(FmiCosim, JacobiFmuCosimulationOfTheDefaultControllerOnTheIntocpsBodyIsTheLibraryRunBitForBit) {
+  exploration::Scenario s = exploration::default_scenario();
+  s.body.kind = exploration::BodyKind::intocps;
+  expect_the_same_run(s, "intocps-body");
+}
+
 TEST(FmiCosim, GaussSeidelBreaksTheFlagHandshakeAndTheEpochHandshakeHoldsAndCompletes) {
   const auto flag = swarmcheck::testing::fmi_scratch("gs-flag");
   const auto epoch = swarmcheck::testing::fmi_scratch("gs-epoch");

@@ -45,6 +45,16 @@ TEST(FmiExport, EveryModelDescriptionFollowsTheFmi2RulesForOneFourAndThirteenRob
       EXPECT_TRUE(problems.empty()) << fmi::to_string(kind) << " with " << n << " robots:\n" << join(problems);
     }
   }
+  // The real system's FMUs: the thesis interface's Controller and Body, and the thesis preset's.
+  exploration::Scenario preset = exploration::default_scenario();
+  preset.controller = exploration::ControllerKind::thesis;
+  preset.body.kind = exploration::BodyKind::intocps;
+  for (const fmi::Kind kind : {fmi::Kind::controller, fmi::Kind::body})
+    for (const fmi::FmuSetup& setup : {fmi::fmu_setup(kind, fmi::thesis_interface_scenario(), fmi::Interface::thesis),
+                                       fmi::fmu_setup(kind, preset)}) {
+      const auto problems = fmi2_problems(fmi::model_description_xml(setup, "test"));
+      EXPECT_TRUE(problems.empty()) << fmi::model_name(setup) << ":\n" << join(problems);
+    }
 }
 
 TEST(FmiExport, TheRuleCheckerCatchesBrokenDescriptions) {

@@ -91,6 +91,15 @@ struct Loaded {
   FmuLibrary environment{swarmcheck::testing::export_fmu(dir, fmi::Kind::environment, exploration::default_scenario())};
   FmuLibrary controller{swarmcheck::testing::export_fmu(dir, fmi::Kind::controller, exploration::default_scenario())};
   FmuLibrary body{swarmcheck::testing::export_fmu(dir, fmi::Kind::body, exploration::default_scenario())};
+  // The thesis interface's Controller (Real ports) and Body (the 20-sim body's memory in its state).
+  FmuLibrary thesis_controller{thesis_fmu(dir, fmi::Kind::controller, "UController.fmu")};
+  FmuLibrary intocps_body{thesis_fmu(dir, fmi::Kind::body, "Body_Block1.fmu")};
+
+  static std::string thesis_fmu(const std::filesystem::path& dir, fmi::Kind kind, const std::string& file) {
+    const std::string path = (dir / file).string();
+    fmi::write_fmu(fmi::fmu_setup(kind, fmi::thesis_interface_scenario(), fmi::Interface::thesis), path);
+    return path;
+  }
 };
 
 Loaded& loaded() {
@@ -119,7 +128,8 @@ TEST(FmiLifecycle, TwoEnvironmentInstancesInOneProcessStepIndependently) {
 }
 
 TEST(FmiLifecycle, ARestoredOrDeserializedStateContinuesWithTheSameBits) {
-  for (FmuLibrary* lib : {&loaded().environment, &loaded().controller, &loaded().body}) {
+  for (FmuLibrary* lib : {&loaded().environment, &loaded().controller, &loaded().body, &loaded().thesis_controller,
+                          &loaded().intocps_body}) {
     Log log;
     Fmu f(*lib, "f", log);
     ASSERT_EQ(f.init(), fmi2OK) << lib->path();
@@ -129,7 +139,12 @@ TEST(FmiLifecycle, ARestoredOrDeserializedStateContinuesWithTheSameBits) {
           f.set("xDesired", 3.5), f.set("yDesired", 2.5), f.set("x", 0.5 + 0.01 * k);
           f.set_int("onDestinationInput", k % 7 == 0 ? 1 : 0);
         }
-        if (lib == &loaded().body) f.set("servo_left_input", 0.3), f.set("servo_right_input", -0.1 - 0.001 * k);
+        if (lib == &loaded().thesis_controller) {
+          f.set("xDesired", 3.5), f.set("yDesired", 2.5), f.set("x", 0.5 + 0.01 * k);
+          f.set("onDestinationInput", k % 7 == 0 ? 1.0 : 0.0);
+        }
+        if (lib == &loaded().body || lib == &loaded().intocps_body)
+          f.set("servo_left_input", 0.3), f.set("servo_right_input", -0.1 - 0.001 * k);
         if (lib == &loaded().environment) f.set_int("onDestination2Input", k % 5 == 0 ? 0 : 1);
         ASSERT_EQ(f.step(k * 0.1, 0.1), fmi2OK);
       }

@@ -33,12 +33,23 @@ struct Exported {
   fmi::FmuSetup setup;
 };
 
+// s with the thesis preset's controller and body (`fmu export ... --preset thesis`).
+exploration::Scenario intocps_preset(exploration::Scenario s) {
+  s.controller = exploration::ControllerKind::thesis;
+  s.body.kind = exploration::BodyKind::intocps;
+  return s;
+}
+
 std::vector<Exported> every_fmu() {
   const exploration::Scenario s = exploration::default_scenario();
   return {{"environment", fmi::fmu_setup(fmi::Kind::environment, s)},
           {"controller", fmi::fmu_setup(fmi::Kind::controller, s)},
           {"body", fmi::fmu_setup(fmi::Kind::body, s)},
-          {"thesis-environment", fmi::fmu_setup(fmi::Kind::environment, fmi::thesis_interface_scenario(), fmi::Interface::thesis)}};
+          {"thesis-environment", fmi::fmu_setup(fmi::Kind::environment, fmi::thesis_interface_scenario(), fmi::Interface::thesis)},
+          {"thesis-controller", fmi::fmu_setup(fmi::Kind::controller, fmi::thesis_interface_scenario(), fmi::Interface::thesis)},
+          {"thesis-body", fmi::fmu_setup(fmi::Kind::body, fmi::thesis_interface_scenario(), fmi::Interface::thesis)},
+          {"intocps-body", fmi::fmu_setup(fmi::Kind::body, intocps_preset(s))},
+          {"thesis-law-controller", fmi::fmu_setup(fmi::Kind::controller, intocps_preset(s))}};
 }
 
 std::string entry(const std::string& archive, const std::string& name) {

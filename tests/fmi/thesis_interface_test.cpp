@@ -8,12 +8,15 @@
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <sstream>
 
 #include "fmi/export/fmu_export.hpp"
 #include "fmi/fmu/model_description.hpp"
 #include "fmi/master/master.hpp"
+#include "fmi/master/outputs_csv.hpp"
 #include "impl/exploration/environment.hpp"
 #include "spec/exploration/scenario.hpp"
+#include "swarmcheck/exploration.hpp"
 #include "tests/fmi/scratch.hpp"
 
 namespace {
@@ -110,5 +113,66 @@ TEST(FmiThesisInterface, ThePublishedMultiModelsEnvironmentParametersRunSwarmche
   }
   EXPECT_GT(library.state().planning_steps, 100);
   EXPECT_GT(out("eP"), 10.0);
+  std::filesystem::remove_all(dir);
+}
+
+// Acceptance of issue 35: thesis A's INTO-CPS project laid out as published (FMUs/, its FMU keys
+// and instance names, Multi-models/mm-new/mm.json's connections and parameters, the configuration's
+// keys), with `fmu export --intocps DIR --interface thesis`'s FMUs in place of the thesis's, runs
+// in the master; its outputs.csv has the engine's 35 columns in the engine's order; and the run is
+// `swarmcheck run --mode cosim` with the thesis preset (rule, controller and body the thesis's),
+// value for value at every step, to the completion step.
+TEST(FmiThesisInterface, ThePublishedProjectWithSwarmchecksFmusIsRunModeCosimUnderTheThesisPresetValueForValue) {
+  const std::filesystem::path dir = swarmcheck::testing::fmi_scratch("thesis-project");
+  const exploration::Scenario scenario = fmi::thesis_interface_scenario();
+  const fmi::ThesisProject project = fmi::write_intocps_thesis(scenario, dir.string());
+  EXPECT_EQ(project.multimodel, (dir / "Multi-models" / "mm-new" / "mm.json").string());
+  for (const char* fmu : {"Environment.fmu", "UController.fmu", "Body_Block1.fmu", "Body_Block4.fmu"})
+    EXPECT_TRUE(std::filesystem::exists(dir / "FMUs" / fmu)) << fmu;
+  fm::Master master(fm::read_multimodel(project.multimodel), fm::read_config(project.config), fm::Algorithm::jacobi);
+
+  // The engine's columns: time, step-size, then the connected outputs by name.
+  std::ostringstream header;
+  fm::OutputsCsv(master).header(header);
+  std::vector<std::string> columns;
+  std::stringstream cells(header.str().substr(0, header.str().find('\n')));
+  for (std::string c; std::getline(cells, c, ',');) columns.push_back(c);
+  ASSERT_EQ(columns.size(), 35u);
+  EXPECT_EQ(columns[0], "time");
+  EXPECT_EQ(columns[1], "step-size");
+  EXPECT_TRUE(std::is_sorted(columns.begin() + 2, columns.end()));
+  EXPECT_EQ(columns[2], "{Controller}.ControllerInstance1.onDestinationOutput");
+  EXPECT_EQ(columns[34], "{Robot4}.Robot4Instance.robot_y");
+
+  exploration::Scenario s = scenario;
+  s.mode = exploration::Mode::cosim;
+  s.controller = exploration::ControllerKind::thesis;
+  s.body.kind = exploration::BodyKind::intocps;
+  Exploration library(s);
+  const auto bits = [](double v) { return std::bit_cast<uint64_t>(v); };
+  const std::string env = "{Environment}.EnvironmentInstance.";
+  const fm::Master::Port eP = master.port(env + "eP");
+  int64_t fmu_completion = -1;
+  while (!master.done()) {
+    master.step();
+    library.step();
+    ASSERT_EQ(bits(master.value(eP)), bits(library.eP())) << "step " << master.steps();
+    for (std::size_t r = 0; r < s.robots.size(); ++r) {
+      const std::string k = std::to_string(r + 1);
+      const std::string robot = "{Robot" + k + "}.Robot" + k + "Instance.";
+      const auto& body = library.bodies()[r];
+      const auto& wp = library.robots()[r].waypoint;
+      const auto at = [&](const std::string& port) { return bits(master.value(master.port(port))); };
+      ASSERT_EQ(at(robot + "robot_x"), bits(body.x_m)) << "step " << master.steps() << " robot " << k;
+      ASSERT_EQ(at(robot + "robot_y"), bits(body.y_m)) << "step " << master.steps() << " robot " << k;
+      ASSERT_EQ(at(robot + "robot_theta"), bits(body.theta_rad)) << "step " << master.steps() << " robot " << k;
+      ASSERT_EQ(at(env + "xDesired" + k), bits(wp[0])) << "step " << master.steps() << " robot " << k;
+      ASSERT_EQ(at(env + "yDesired" + k), bits(wp[1])) << "step " << master.steps() << " robot " << k;
+    }
+    if (fmu_completion < 0 && master.value(eP) >= 100) fmu_completion = master.steps();
+  }
+  ASSERT_TRUE(library.completion_step().has_value());
+  EXPECT_EQ(fmu_completion, *library.completion_step());
+  EXPECT_EQ(master.steps(), *library.completion_step());
   std::filesystem::remove_all(dir);
 }
