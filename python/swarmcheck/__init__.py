@@ -86,6 +86,17 @@ class Trace:
     def __repr__(self) -> str:
         return f"<swarmcheck.Trace: {len(self.records)} step records, {len(self.fields)} field records>"
 
+    def _repr_html_(self) -> str:
+        """A notebook's table: the run's set-up from the header, then eP and sTime every tenth of the run."""
+        import html
+        rows = "".join(f"<tr><th>{html.escape(str(k))}</th><td>{html.escape(str(v))}</td></tr>"
+                       for k, v in self.header.items() if not isinstance(v, (dict, list)))
+        picks = sorted({int(round(k * (len(self.records) - 1) / 10)) for k in range(11)}) if self.records else []
+        steps = "".join(f"<tr><td>{self.step[i]}</td><td>{self.eP[i]:.2f}</td><td>{self.sTime[i]:.1f}</td>"
+                        f"<td>{self.visited[i]}</td></tr>" for i in picks)
+        return (f"<table>{rows}</table><table><tr><th>step</th><th>eP %</th><th>sTime s</th>"
+                f"<th>visited</th></tr>{steps}</table>")
+
 
 def _decode_field(rec: Dict[str, Any], where: str) -> tuple:
     if rec.get("encoding") != "float32-le-base64":

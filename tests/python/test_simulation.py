@@ -94,3 +94,12 @@ def test_end_state_picture_is_the_run_svg(cli, tmp_path):
     assert svg.startswith("<svg") or svg.startswith("<?xml")
     # The same picture but for the title (the CLI names the scenario "default scenario" too).
     assert svg == path.read_text()
+
+
+def test_trace_arrays_and_table_follow_the_records(traced):
+    _, _, trace = traced
+    assert trace.step.tolist() == list(range(STEPS + 1))
+    assert trace.eP.tolist() == [r["eP"] for r in trace.records]
+    table = trace._repr_html_()
+    assert f"<td>{STEPS}</td><td>{trace.eP[-1]:.2f}</td>" in table
+    assert table.count("<tr><td>") == 11
