@@ -2,13 +2,28 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
+
+#include "spec/util/budget.hpp"
 
 #include "views/exploration_svg.hpp"
 
 namespace ex = swarmcheck::exploration;
 
 namespace swarmcheck::python {
+
+void require_memory(const PyScenario& s, std::uint64_t limit_bytes) {
+  const ex::Scenario& v = s.valid.get();
+  // As `run`: the process (15 MiB, the CLI's kProcessBytes), and the larger of the map's cells and
+  // the reachability check's bit per cell and queue.
+  const double cells = static_cast<double>(v.map_size) * v.map_size;
+  const double estimate = 15.0 * (1 << 20) + std::max(static_cast<double>(ex::Exploration::estimated_bytes(v)),
+                                                       cells / 8 + cells * 8);
+  require_within(s.where, "a " + std::to_string(v.map_size) + " x " + std::to_string(v.map_size) + " map with " +
+                              std::to_string(v.robots.size()) + " robots",
+                 estimate, limit_bytes, "memory_limit");
+}
 
 PySimulation::PySimulation(PyScenario s, int32_t threads, bool paths)
     : scenario_(std::move(s)),

@@ -15,6 +15,10 @@
 
 namespace swarmcheck::python {
 
+// Refuses a scenario whose run would not fit in `limit_bytes` (0: no limit) before anything is
+// allocated, with the message of `swarmcheck run`'s --memory-limit (the same estimate).
+void require_memory(const PyScenario& s, std::uint64_t limit_bytes);
+
 class PySimulation {
  public:
   PySimulation(PyScenario s, int32_t threads, bool paths);

@@ -5,6 +5,7 @@
 
 #include "python/src/bindings.hpp"
 #include "python/src/json_convert.hpp"
+#include "impl/io/usable_memory.hpp"
 #include "python/src/simulation.hpp"
 
 namespace py = pybind11;
@@ -18,6 +19,14 @@ constexpr int64_t kStallWindow = 100000;   // `run --stall-window`'s default
 int32_t threads_of(int64_t threads) {
   if (threads < 0 || threads > 4096) throw InputError("threads", "expected an integer in [0, 4096] (0: every core)");
   return static_cast<int32_t>(threads);
+}
+
+// memory_limit: None for the CLI's default (3/4 of the memory this process may use), 0 for none.
+std::uint64_t memory_limit_of(const py::object& limit) {
+  if (limit.is_none()) return impl::io::default_memory_limit();
+  if (py::isinstance<py::bool_>(limit) || !py::isinstance<py::int_>(limit) || limit.cast<py::int_>() < py::int_(0))
+    throw InputError("memory_limit", "expected a number of bytes >= 0 (0: no limit), or None for the default");
+  return limit.cast<std::uint64_t>();
 }
 
 void check_stall_window(int64_t w) {
@@ -82,11 +91,17 @@ Simulation(scenario=None, *, threads=0, paths=True, **keywords): the scenario as
 swarmcheck.Scenario takes it (None, a Scenario, a dict or a JSON file's path) and the `run`
 flags as keywords (mode, rule, preset, controller, body, seed, steps). threads: 0 for every
 core (the results are the same bits on any number). paths: keep the robots' paths for the
-picture (_repr_svg_).)")
-      .def(py::init([](const py::object& scenario, int64_t threads, bool paths, const py::kwargs& kw) {
-             return std::make_unique<PySimulation>(scenario_from(scenario, kw), threads_of(threads), paths);
+picture (_repr_svg_). memory_limit: bytes the run may take (None: the CLI's default, 3/4 of the
+memory this process may use; 0: no limit); a scenario estimated past it is refused before
+anything is allocated (swarmcheck.InputError). Not to be used from two threads at once.)")
+      .def(py::init([](const py::object& scenario, int64_t threads, bool paths, const py::object& memory_limit,
+                       const py::kwargs& kw) {
+             PyScenario s = scenario_from(scenario, kw);
+             require_memory(s, memory_limit_of(memory_limit));
+             return std::make_unique<PySimulation>(std::move(s), threads_of(threads), paths);
            }),
-           py::arg("scenario") = py::none(), py::kw_only(), py::arg("threads") = 0, py::arg("paths") = true)
+           py::arg("scenario") = py::none(), py::kw_only(), py::arg("threads") = 0, py::arg("paths") = true,
+           py::arg("memory_limit") = py::none())
       .def("step", &PySimulation::step, py::arg("n") = 1,
            "Do n master steps (fewer if the run is done first). Long calls release the GIL; Ctrl-C raises "
            "KeyboardInterrupt, the simulation left at the last whole step.")
@@ -151,18 +166,21 @@ picture (_repr_svg_).)")
 
   m.def(
       "run",
-      [](const py::object& scenario, int64_t stall_window, int64_t threads, const py::kwargs& kw) {
+      [](const py::object& scenario, int64_t stall_window, int64_t threads, const py::object& memory_limit,
+         const py::kwargs& kw) {
         check_stall_window(stall_window);
-        PySimulation sim(scenario_from(scenario, kw), threads_of(threads), false);
+        PyScenario s = scenario_from(scenario, kw);
+        require_memory(s, memory_limit_of(memory_limit));
+        PySimulation sim(std::move(s), threads_of(threads), false);
         return to_python(sim.run(stall_window));
       },
       py::arg("scenario") = py::none(), py::kw_only(), py::arg("stall_window") = kStallWindow,
-      py::arg("threads") = 0,
+      py::arg("threads") = 0, py::arg("memory_limit") = py::none(),
       R"(One exploration run, as `swarmcheck run --json`: returns the same dict.
 
 scenario: None (the built-in thesis set-up), a Scenario, a dict or a JSON file's path; the
 keywords are the flags of `run`: mode, rule, preset, controller, body, seed, steps,
-stall_window, threads. Computed by the library in this process, the GIL released; Ctrl-C raises
+stall_window, threads, memory_limit (bytes; None: the CLI's default; 0: none). Computed by the library in this process, the GIL released; Ctrl-C raises
 KeyboardInterrupt.)");
 }
 

@@ -65,7 +65,7 @@ class Scenario:
 class Simulation:
     """One exploration run of the library, stepped from Python."""
     def __init__(self, scenario: ScenarioSource = None, *, threads: int = 0, paths: bool = True,
-                 **keywords: Any) -> None: ...
+                 memory_limit: Optional[int] = None, **keywords: Any) -> None: ...
     def step(self, n: int = 1) -> None:
         """Do n master steps (fewer if the run is done first); Ctrl-C raises KeyboardInterrupt."""
     def run(self, stall_window: int = 100000) -> Dict[str, Any]:
@@ -119,7 +119,7 @@ class Simulation:
     def _repr_svg_(self) -> str: ...
 
 def run(scenario: ScenarioSource = None, *, stall_window: int = 100000, threads: int = 0,
-        mode: Optional[str] = ..., rule: Optional[str] = ..., preset: Optional[str] = ...,
+        memory_limit: Optional[int] = None, mode: Optional[str] = ..., rule: Optional[str] = ..., preset: Optional[str] = ...,
         controller: Optional[str] = ..., body: Optional[str] = ..., seed: Optional[int] = ...,
         steps: Optional[int] = ...) -> Dict[str, Any]:
     """One exploration run: the dict `swarmcheck run --json` prints, computed in this process."""

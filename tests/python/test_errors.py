@@ -92,3 +92,17 @@ def test_bad_fsm_text_raises_the_cli_message(cli, tmp_path):
     with pytest.raises(swarmcheck.InputError) as e:
         swarmcheck.Automaton.read(path)
     assert str(e.value) == expected
+
+
+def test_a_map_past_the_memory_limit_is_refused_with_the_cli_message(cli, tmp_path):
+    path = tmp_path / "big.json"
+    path.write_text(json.dumps({"map_size": 60000, "robots": [[0.5, 0.5]]}))
+    expected = cli_message(cli, "run", path, "--memory-limit", "1G")
+    assert "--memory-limit" in expected
+    with pytest.raises(swarmcheck.InputError) as e:
+        swarmcheck.run(str(path), memory_limit=1 << 30)
+    assert str(e.value) == expected.replace("--memory-limit", "memory_limit")
+    with pytest.raises(ValueError, match="memory_limit"):
+        swarmcheck.Simulation(str(path))   # the default limit: 3/4 of this machine's memory
+    with pytest.raises(ValueError, match="^memory_limit: expected a number of bytes"):
+        swarmcheck.run(memory_limit=-1)
