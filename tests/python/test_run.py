@@ -66,3 +66,13 @@ def test_the_same_scenario_object_runs_the_same(cli_json, source_dir):
     s = swarmcheck.Scenario(os.path.join(source_dir, "scenarios", "default.json"), mode="abstract", steps=250)
     assert swarmcheck.run(s) == cli_json("run", os.path.join(source_dir, "scenarios", "default.json"),
                                          "--mode", "abstract", "--steps", 250)
+
+
+@pytest.mark.parametrize("preset", [None, "thesis"])
+def test_scenario_to_dict_round_trips_and_runs_the_same(preset):
+    s = swarmcheck.Scenario(mode="cosim", preset=preset, seed=5)
+    d = s.to_dict()
+    again = swarmcheck.Scenario(d)
+    assert again.to_dict() == d
+    assert swarmcheck.run(again, steps=120) == swarmcheck.run(s, steps=120)
+    assert s.replace(rule="stochastic").rule == "stochastic" and s.rule == (preset and "thesis" or "deterministic")
