@@ -17,6 +17,7 @@
 #include "fmi/master/fmu_library.hpp"
 #include "fmi/master/master.hpp"
 #include "impl/io/atomic_file.hpp"
+#include "impl/io/interrupt.hpp"
 #include "model/exploration/exploration_model.hpp"
 #include "spec/exploration/scenario.hpp"
 #include "spec/util/hana_json.hpp"
@@ -39,7 +40,7 @@ struct Loop {
 
 // Which file is which (by the variables each has: eP, servoLeft, robot_x) and the Environment's
 // robot and obstacle counts, read in a child process: loading someone's library may crash.
-Loop identify(const FmuConformOptions& o) {
+Loop identify(const FmuConformOptions& o, const fs::path& scratch) {
   const std::vector<std::string> files{o.environment, o.controller, o.body};
   for (const std::string& f : files) {
     std::error_code ec;
@@ -47,6 +48,9 @@ Loop identify(const FmuConformOptions& o) {
     if (!fs::is_regular_file(f, ec)) throw InputError(f, "no such FMU file");
   }
   const ChildEnd end = run_in_child([&](CaseProgress&) {
+    // The FMUs unpack under the scratch folder, which the parent removes whatever the child does.
+    fs::create_directories(scratch);
+    ::setenv("TMPDIR", scratch.c_str(), 1);
     Json out = Json::object();
     for (const std::string& f : files) {
       const fm::FmuLibrary lib(f);
@@ -228,8 +232,17 @@ std::optional<FmuDivergence> read_outcome(const std::string& text) {
 std::optional<FmuDivergence> run_case(const ex::Scenario& s, const Loop& loop, const fs::path& dir,
                                       const FmuConformOptions& o, bool* hung) {
   write_case(s, loop, o.interface, dir, s.max_steps);
-  const ChildEnd end = run_in_child([&](CaseProgress& p) { return outcome_text(lockstep(s, dir, o, p)); },
-                                    ChildLimits{o.quiet_limit});
+  const ChildEnd end = run_in_child(
+      [&](CaseProgress& p) {
+        // The master unpacks the FMUs under the case's folder: a child that crashes or is killed
+        // leaves them there, and the parent removes the folder.
+        ::setenv("TMPDIR", dir.c_str(), 1);
+        return outcome_text(lockstep(s, dir, o, p));
+      },
+      ChildLimits{o.quiet_limit});
+  std::error_code ec;
+  for (const auto& e : fs::directory_iterator(dir, ec))
+    if (e.path().filename().string().rfind("swarmcheck-fmu-", 0) == 0) fs::remove_all(e.path(), ec);
   *hung = end.how == ChildEnd::How::hung;
   if (end.finished()) return read_outcome(end.output);
   FmuDivergence d;
@@ -238,17 +251,22 @@ std::optional<FmuDivergence> run_case(const ex::Scenario& s, const Loop& loop, c
   return d;
 }
 
-// A temporary folder for the cases' files, removed whatever happens.
+// A temporary folder for the cases' files, removed whatever happens (Ctrl-C included).
 struct CaseFolder {
   fs::path dir = fs::temp_directory_path() / ("swarmcheck-conform-fmu-" + std::to_string(::getpid()));
+  int slot = -1;
   CaseFolder() {
     fs::remove_all(dir);
     fs::create_directories(dir);
+    slot = impl::io::register_temp_folder(dir.c_str());
   }
   ~CaseFolder() {
     std::error_code ec;
     fs::remove_all(dir, ec);
+    impl::io::release_temp_file(slot);
   }
+  CaseFolder(const CaseFolder&) = delete;
+  CaseFolder& operator=(const CaseFolder&) = delete;
 };
 
 void write_counterexample(const FmuCounterexample& cx, const Loop& loop, const FmuConformOptions& o) {
@@ -291,11 +309,11 @@ FmuConformReport run_fmu_conform(const FmuConformOptions& o) {
   if (o.tolerance.absolute < 0 || o.tolerance.relative < 0 || std::isnan(o.tolerance.absolute) ||
       std::isnan(o.tolerance.relative))
     throw InputError("--tolerance", "expected numbers >= 0");
-  const Loop loop = identify(o);
+  const CaseFolder work;
+  const Loop loop = identify(o, work.dir / "identify");
   FmuConformReport report;
   report.robots = loop.robots;
   report.obstacles = loop.obstacles;
-  const CaseFolder work;
   std::optional<std::pair<ex::Scenario, FmuDivergence>> last_failure;
   int case_number = 0;
   const auto property = [&](CaseBudget& budget) {

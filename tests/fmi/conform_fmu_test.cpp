@@ -3,6 +3,7 @@
 // with a minimal counterexample folder that replays the divergence in swarmcheck's master; and a
 // Body FMU that crashes or hangs is a counterexample, not the end of the campaign.
 #include <gtest/gtest.h>
+#include <stdlib.h>
 
 #include <bit>
 #include <filesystem>
@@ -126,9 +127,23 @@ TEST(ConformFmu, ACatalogueFaultInTheEnvironmentFmuIsCaughtAndItsCounterexampleF
   fs::remove_all(e.dir);
 }
 
+// Everything the campaign unpacks or writes goes under TMPDIR: a folder of the test's own, which
+// must be empty again after the campaign, whatever its children did (crashed, were killed).
+struct OwnTmpdir {
+  fs::path dir;
+  explicit OwnTmpdir(const fs::path& d) : dir(d) {
+    fs::create_directories(dir);
+    ::setenv("TMPDIR", dir.c_str(), 1);
+  }
+  ~OwnTmpdir() { ::unsetenv("TMPDIR"); }
+  bool empty() const { return fs::is_empty(dir); }
+};
+
 TEST(ConformFmu, ABodyFmuThatCrashesAtItsSeventhStepIsACounterexampleNamingTheSignal) {
   const Exported e = export_loop("crash", FMU_FAULT_BODY_CRASHES_AT_ITS_SEVENTH_STEP);
+  const OwnTmpdir tmp(e.dir / "tmp");
   const cf::FmuConformReport r = cf::run_fmu_conform(options(e, 10));
+  EXPECT_TRUE(tmp.empty()) << "the crashed cases left files in " << tmp.dir;
   ASSERT_TRUE(r.counterexample.has_value());
   EXPECT_NE(r.counterexample->divergence.abnormal_end.find("crashed with SIGSEGV"), std::string::npos)
       << r.counterexample->divergence.describe();
@@ -147,7 +162,9 @@ TEST(ConformFmu, ABodyFmuThatHangsIsStoppedAtTheCaseTimeLimitAndIsACounterexampl
   const Exported e = export_loop("hang", FMU_FAULT_BODY_HANGS_AT_ITS_SEVENTH_STEP);
   cf::FmuConformOptions o = options(e, 5);
   o.quiet_limit = std::chrono::milliseconds(500);
+  const OwnTmpdir tmp(e.dir / "tmp");
   const cf::FmuConformReport r = cf::run_fmu_conform(o);
+  EXPECT_TRUE(tmp.empty()) << "the killed cases left files in " << tmp.dir;
   ASSERT_TRUE(r.counterexample.has_value());
   EXPECT_NE(r.counterexample->divergence.abnormal_end.find("hung"), std::string::npos)
       << r.counterexample->divergence.describe();
