@@ -170,6 +170,22 @@ bool serve_available() { return true; }
 
 int serve(const ServeOptions& o, const std::function<void(int port)>& on_listening) {
   if (o.port < 0 || o.port > 65535) throw InputError("--port", fmt::format("expected an integer in [0, 65535], got {}", o.port));
+  // SIGINT and SIGTERM are blocked before anything is set up: one that comes while the server
+  // starts waits for the waiter below and stops it as any other (it ended the process with the
+  // command line's 130 before). A failed start unblocks them again.
+  sigset_t set;
+  sigemptyset(&set);
+  sigaddset(&set, SIGINT);
+  sigaddset(&set, SIGTERM);
+  sigset_t before;
+  pthread_sigmask(SIG_BLOCK, &set, &before);
+  struct RestoreMask {
+    sigset_t mask;
+    bool keep = false;
+    ~RestoreMask() {
+      if (!keep) pthread_sigmask(SIG_SETMASK, &mask, nullptr);
+    }
+  } restore{before};
   ServeState state(o);   // outlives the server and its threads (the streams' releasers use it)
   ServerIdentity me{o.bind, o.port, o.allowed_hosts};
   GuardedServer svr(serving::connection_limits(o), state.stopping);
@@ -192,11 +208,7 @@ int serve(const ServeOptions& o, const std::function<void(int port)>& on_listeni
   // wait of every connection looks at `stopping` at least every 100 ms, dot is killed, and the
   // listening loop ends; if that has not happened within a second (a view still being built) or
   // a second signal comes, the process ends at once, its temporary files removed.
-  sigset_t set;
-  sigemptyset(&set);
-  sigaddset(&set, SIGINT);
-  sigaddset(&set, SIGTERM);
-  pthread_sigmask(SIG_BLOCK, &set, nullptr);
+  restore.keep = true;   // the waiter owns the signals from here
   ::signal(SIGPIPE, SIG_IGN);
   std::mutex mutex;
   std::condition_variable ended;

@@ -13,6 +13,7 @@
 #include <memory>
 #include <optional>
 
+#include "apps/swarmcheck/conform_fmu.hpp"
 #include "apps/swarmcheck/conform_systems.hpp"
 #include "apps/swarmcheck/mpi_pool.hpp"
 #include "apps/swarmcheck/verb.hpp"
@@ -39,6 +40,7 @@ struct ConformArgs {
   bool cases_given = false;     // --cases on the command line: every system's budget
   bool json = false;
   bool stats = false;
+  ConformFmuArgs fmu;           // --fmu FILE ...: the user's FMUs instead of the library
 };
 
 Json coverage_json(const Coverage& c) {
@@ -247,6 +249,11 @@ int conform(ConformArgs a) {
   if (!(a.case_time_limit_s >= 0.001 && a.case_time_limit_s <= 86400))
     throw InputError("--case-time-limit", "expected seconds, at least 0.001 and at most 86400");
   a.options.quiet_limit = std::chrono::milliseconds(static_cast<int64_t>(a.case_time_limit_s * 1000));
+  if (!a.fmu.fmus.empty()) {
+    if (a.system != "all") throw InputError("--system", "goes without --fmu (the FMUs are system A's)");
+    return conform_fmu(a.fmu, a.options.cases, a.cases_given, a.options.seed, a.options.max_steps, a.options.out_dir,
+                       a.case_time_limit_s, a.json);
+  }
   const std::vector<std::string> systems =
       a.system == "all" ? std::vector<std::string>{"exploration", "automata", "missions"} : std::vector<std::string>{a.system};
   const mpi::Launch launch = mpi::launch_from_environment();
@@ -329,6 +336,7 @@ void add_conform_verb(CLI::App& app, int& exit_code) {
                   "Seconds a case may run without reaching a new step before it counts as hung (each case runs in "
                   "a child process: a crash or a hang is a counterexample)")
       ->capture_default_str();
+  add_conform_fmu_options(cmd, a->fmu);
   cmd->callback([a, cases, &exit_code] {
     a->cases_given = cases->count() > 0;
     exit_code = guarded([&] { return conform(*a); });

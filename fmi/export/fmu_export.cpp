@@ -10,6 +10,7 @@
 
 #include "fmi/fmu/model_description.hpp"
 #include "impl/io/atomic_file.hpp"
+#include "spec/exploration/controller_thesis.hpp"
 #include "spec/exploration/neighbourhood.hpp"
 #include "spec/exploration/scenario.hpp"
 #include "spec/exploration/trace.hpp"
@@ -161,35 +162,94 @@ FmuSetup fmu_setup(Kind kind, const ex::Scenario& s, Interface interface) {
   return setup;
 }
 
-std::string fmu_archive(const FmuSetup& setup) {
+std::string fmu_archive(const FmuSetup& setup) { return fmu_archive(setup, library_bytes()); }
+
+std::string fmu_archive(const FmuSetup& setup, const std::string& library) {
   const std::string id = model_identifier(setup.kind);
   return zip_bytes({{"modelDescription.xml", model_description_xml(setup, ex::kToolVersion)},
-                    {"binaries/linux64/" + id + ".so", library_bytes()},
+                    {"binaries/linux64/" + id + ".so", library},
                     {"resources/swarmcheck-fmu.json", setup_to_json(setup)}});
 }
 
 void write_fmu(const FmuSetup& setup, const std::string& path) { io::write_file_atomically(path, fmu_archive(setup)); }
 
-void write_intocps(const ex::Scenario& s, Handshake handshake, const std::string& dir, std::optional<double> end_time_s) {
-  if (handshake == Handshake::epoch && s.controller == ex::ControllerKind::thesis)
-    throw InputError("--handshake", "the thesis controller has the flag handshake only (its published UController)");
-  std::error_code ec;
-  std::filesystem::create_directories(dir, ec);
-  if (ec) throw InputError(dir, "cannot create the folder: " + ec.message());
-  const auto in = [&](const std::string& name) { return (std::filesystem::path(dir) / name).string(); };
-  // Every output must be writable before any is written (a folder named coe.json refused after the
-  // FMUs were replaced left a folder half old, half new).
-  for (const char* name : {"Environment.fmu", "Controller.fmu", "Body.fmu", "coe.json", "multimodel.json"})
-    io::check_output_path(in(name));
-  // Each archive is whole or absent; the multi-model goes last, so a folder with it is complete.
-  write_fmu(fmu_setup(Kind::environment, s), in("Environment.fmu"));
-  write_fmu(fmu_setup(Kind::controller, s), in("Controller.fmu"));
-  write_fmu(fmu_setup(Kind::body, s), in("Body.fmu"));
+namespace {
 
+// Every parameter the scenario decides, for an Environment whose instance prefix is `env`: what
+// conform --fmu writes so that FMUs of any start values run the case (swarmcheck's names; the
+// thesis interface's Environment has them too, with nRobots and nObstacles).
+void scenario_parameters(const ex::Scenario& s, const std::string& env, bool thesis, json_io::Json& parameters) {
+  parameters[env + "mapSize"] = s.map_size;
+  parameters[env + "cellSize"] = s.cell_size;
+  parameters[env + "step_size"] = s.params.step_size;
+  parameters[env + "s_range"] = s.params.s_range;
+  parameters[env + "a1"] = s.params.a1;
+  parameters[env + "a2"] = s.params.a2;
+  parameters[env + "epsilon"] = s.params.epsilon;
+  parameters[env + "ertu_perc"] = s.params.ertu;
+  parameters[env + "eta"] = s.params.eta;
+  parameters[env + "max_ph"] = s.params.max_ph;
+  parameters[env + "phi"] = s.params.phi;
+  parameters[env + "lambda"] = s.params.lambda;
+  parameters[env + "rule"] = static_cast<int32_t>(s.rule);   // 0 thesis, 1 deterministic, 2 stochastic
+  parameters[env + "seed"] = static_cast<int32_t>(s.seed);
+  for (std::size_t r = 0; r < s.robots.size(); ++r) {
+    parameters[env + "lx_" + std::to_string(r + 1)] = s.robots[r][0];
+    parameters[env + "ly_" + std::to_string(r + 1)] = s.robots[r][1];
+  }
+  for (std::size_t k = 0; k < s.obstacles.size(); ++k) {
+    parameters[env + "ox_" + std::to_string(k + 1)] = s.obstacles[k][0];
+    parameters[env + "oy_" + std::to_string(k + 1)] = s.obstacles[k][1];
+  }
+  if (thesis) {
+    parameters[env + "nRobots"] = static_cast<int32_t>(s.robots.size());
+    parameters[env + "nObstacles"] = static_cast<int32_t>(s.obstacles.size());
+  }
+}
+
+// A body instance's parameters: the kinematic body's, or every one of the 20-sim body's.
+void body_parameters(const ex::Scenario& s, std::size_t r, const std::string& body, bool every, json_io::Json& parameters) {
+  if (s.body.kind == ex::BodyKind::intocps) {
+    parameters[body + "initial_position[0]"] = s.robots[r][0];
+    parameters[body + "initial_position[1]"] = s.robots[r][1];
+    for (const ex::IntocpsBodyParameter& d : ex::intocps_body_parameters())
+      if (d.initial_position_index < 0 || d.initial_position_index == 2) {
+        const double v = ex::intocps_parameter_value(s.body.intocps, d);
+        if (every || v != ex::intocps_parameter_value(ex::IntocpsBodyParams{}, d)) parameters[body + std::string(d.name)] = v;
+      }
+    return;
+  }
+  parameters[body + "x0"] = s.robots[r][0];
+  parameters[body + "y0"] = s.robots[r][1];
+  if (every) {
+    const ex::RobotParams rp;
+    parameters[body + "theta0"] = 0.0;
+    parameters[body + "wheel_radius"] = rp.wheel_radius_m;
+    parameters[body + "motor_gain"] = rp.motor_gain_rad_per_s;
+    parameters[body + "half_axle"] = rp.half_axle_m;
+  }
+}
+
+// A controller instance's gains as the model's law has them.
+void controller_parameters(const ex::Scenario& s, const std::string& ctrl, json_io::Json& parameters) {
+  if (s.controller == ex::ControllerKind::thesis) {
+    const ex::ThesisControllerParams tp;
+    parameters[ctrl + "k_beta"] = tp.k_beta;
+    parameters[ctrl + "k_v"] = tp.k_v;
+  } else {
+    const ex::RobotParams rp;
+    parameters[ctrl + "k_beta"] = rp.k_beta;
+    parameters[ctrl + "k_v"] = rp.k_v;
+  }
+}
+
+}  // namespace
+
+std::string intocps_multimodel(const ex::Scenario& s, Handshake handshake, const ModelFmus& files, bool every_parameter) {
   using json_io::Json;
   Json mm;
   // Gauss-Seidel steps instances in this order: the controllers and bodies, then the Environment.
-  mm["fmus"] = Json::object({{"{Controller}", "Controller.fmu"}, {"{Body}", "Body.fmu"}, {"{Environment}", "Environment.fmu"}});
+  mm["fmus"] = Json::object({{"{Controller}", files.controller}, {"{Body}", files.body}, {"{Environment}", files.environment}});
   Json connections = Json::object();
   const std::string env = "{Environment}.environment.";
   Json on_destination = Json::array(), epoch = Json::array();
@@ -211,23 +271,90 @@ void write_intocps(const ex::Scenario& s, Handshake handshake, const std::string
     connections[body + "robot_theta"] = Json::array({ctrl + "phi"});
     on_destination.push_back(ctrl + "onDestinationInput");
     epoch.push_back(ctrl + "epochInput");
-    const bool intocps = s.body.kind == ex::BodyKind::intocps;
-    parameters[body + (intocps ? "initial_position[0]" : "x0")] = s.robots[r][0];
-    parameters[body + (intocps ? "initial_position[1]" : "y0")] = s.robots[r][1];
+    body_parameters(s, r, body, every_parameter, parameters);
     parameters[ctrl + "handshake"] = hs;
+    if (every_parameter) controller_parameters(s, ctrl, parameters);
   }
+  if (every_parameter) scenario_parameters(s, env, false, parameters);
   connections[env + "onDestinationOutput"] = on_destination;
   connections[env + "epoch"] = epoch;
   mm["connections"] = connections;
   mm["parameters"] = parameters;
 
-  if (!end_time_s) end_time_s = completion_end_time(s);
-  Json coe;
+  return mm.dump(2) + "\n";
+}
+
+std::string intocps_config(double step_s, double end_s) {
+  json_io::Json coe;
   coe["startTime"] = 0.0;
-  coe["endTime"] = *end_time_s;
-  coe["algorithm"] = Json::object({{"type", "fixed-step"}, {"size", s.params.step_size}});
-  io::write_file_atomically(in("coe.json"), coe.dump(2) + "\n");
-  io::write_file_atomically(in("multimodel.json"), mm.dump(2) + "\n");
+  coe["endTime"] = end_s;
+  coe["algorithm"] = json_io::Json::object({{"type", "fixed-step"}, {"size", step_s}});
+  return coe.dump(2) + "\n";
+}
+
+void write_intocps(const ex::Scenario& s, Handshake handshake, const std::string& dir, std::optional<double> end_time_s) {
+  if (handshake == Handshake::epoch && s.controller == ex::ControllerKind::thesis)
+    throw InputError("--handshake", "the thesis controller has the flag handshake only (its published UController)");
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec) throw InputError(dir, "cannot create the folder: " + ec.message());
+  const auto in = [&](const std::string& name) { return (std::filesystem::path(dir) / name).string(); };
+  // Every output must be writable before any is written (a folder named coe.json refused after the
+  // FMUs were replaced left a folder half old, half new).
+  for (const char* name : {"Environment.fmu", "Controller.fmu", "Body.fmu", "coe.json", "multimodel.json"})
+    io::check_output_path(in(name));
+  // Each archive is whole or absent; the multi-model goes last, so a folder with it is complete.
+  write_fmu(fmu_setup(Kind::environment, s), in("Environment.fmu"));
+  write_fmu(fmu_setup(Kind::controller, s), in("Controller.fmu"));
+  write_fmu(fmu_setup(Kind::body, s), in("Body.fmu"));
+
+  const std::string mm = intocps_multimodel(s, handshake, {"Environment.fmu", "Controller.fmu", "Body.fmu"});
+  if (!end_time_s) end_time_s = completion_end_time(s);
+  io::write_file_atomically(in("coe.json"), intocps_config(s.params.step_size, *end_time_s));
+  io::write_file_atomically(in("multimodel.json"), mm);
+}
+
+std::string thesis_multimodel(const ex::Scenario& s, const ModelFmus& files, bool every_parameter) {
+  const std::size_t n = s.robots.size();
+  using json_io::Json;
+  Json mm;
+  Json fmu_files = Json::object({{"{Environment}", files.environment}, {"{Controller}", files.controller}});
+  for (std::size_t r = 0; r < n; ++r)
+    fmu_files["{Robot" + std::to_string(r + 1) + "}"] = r < files.bodies.size() ? files.bodies[r] : files.body;
+  mm["fmus"] = fmu_files;
+  const std::string env = "{Environment}.EnvironmentInstance.";
+  Json connections = Json::object(), parameters = Json::object();
+  Json told = Json::array();
+  for (std::size_t r = 0; r < n; ++r) {
+    const std::string k = std::to_string(r + 1);
+    const std::string ctrl = "{Controller}.ControllerInstance" + k + ".";
+    const std::string robot = "{Robot" + k + "}.Robot" + k + "Instance.";
+    connections[env + "xDesired" + k] = Json::array({ctrl + "xDesired"});
+    connections[env + "yDesired" + k] = Json::array({ctrl + "yDesired"});
+    connections[ctrl + "onDestinationOutput"] = Json::array({env + "onDestination" + k + "Input"});
+    connections[ctrl + "servoLeft"] = Json::array({robot + "servo_left_input"});
+    connections[ctrl + "servoRight"] = Json::array({robot + "servo_right_input"});
+    connections[robot + "robot_x"] = Json::array({env + "x_" + k, ctrl + "x"});
+    connections[robot + "robot_y"] = Json::array({env + "y_" + k, ctrl + "y"});
+    connections[robot + "robot_theta"] = Json::array({ctrl + "phi"});
+    told.push_back(ctrl + "onDestinationInput");
+    parameters[env + "lx_" + k] = s.robots[r][0];
+    parameters[env + "ly_" + k] = s.robots[r][1];
+    body_parameters(s, r, robot, every_parameter, parameters);
+    if (every_parameter) controller_parameters(s, ctrl, parameters);
+  }
+  connections[env + "onDestinationOutput"] = told;
+  mm["connections"] = connections;
+  parameters[env + "mapSize"] = s.map_size;
+  parameters[env + "nRobots"] = static_cast<int32_t>(n);
+  parameters[env + "nObstacles"] = static_cast<int32_t>(s.obstacles.size());
+  for (std::size_t k = 0; k < s.obstacles.size(); ++k) {
+    parameters[env + "ox_" + std::to_string(k + 1)] = s.obstacles[k][0];
+    parameters[env + "oy_" + std::to_string(k + 1)] = s.obstacles[k][1];
+  }
+  if (every_parameter) scenario_parameters(s, env, true, parameters);
+  mm["parameters"] = parameters;
+  return mm.dump(2) + "\n";
 }
 
 ThesisProject write_intocps_thesis(const ex::Scenario& scenario, const std::string& dir, std::optional<double> end_time_s) {
@@ -262,58 +389,18 @@ ThesisProject write_intocps_thesis(const ex::Scenario& scenario, const std::stri
   const std::string body = fmu_archive(fmu_setup(Kind::body, s, Interface::thesis));
   for (std::size_t r = 0; r < n; ++r) io::write_file_atomically(outputs[2 + r], body);
 
-  using json_io::Json;
-  Json mm;
-  Json fmu_files = Json::object({{"{Environment}", "Environment.fmu"}, {"{Controller}", "UController.fmu"}});
-  for (std::size_t r = 0; r < n; ++r) fmu_files["{Robot" + std::to_string(r + 1) + "}"] = bodies[r];
-  mm["fmus"] = fmu_files;
-  const std::string env = "{Environment}.EnvironmentInstance.";
-  Json connections = Json::object(), parameters = Json::object();
-  Json told = Json::array();
-  for (std::size_t r = 0; r < n; ++r) {
-    const std::string k = std::to_string(r + 1);
-    const std::string ctrl = "{Controller}.ControllerInstance" + k + ".";
-    const std::string robot = "{Robot" + k + "}.Robot" + k + "Instance.";
-    connections[env + "xDesired" + k] = Json::array({ctrl + "xDesired"});
-    connections[env + "yDesired" + k] = Json::array({ctrl + "yDesired"});
-    connections[ctrl + "onDestinationOutput"] = Json::array({env + "onDestination" + k + "Input"});
-    connections[ctrl + "servoLeft"] = Json::array({robot + "servo_left_input"});
-    connections[ctrl + "servoRight"] = Json::array({robot + "servo_right_input"});
-    connections[robot + "robot_x"] = Json::array({env + "x_" + k, ctrl + "x"});
-    connections[robot + "robot_y"] = Json::array({env + "y_" + k, ctrl + "y"});
-    connections[robot + "robot_theta"] = Json::array({ctrl + "phi"});
-    told.push_back(ctrl + "onDestinationInput");
-    parameters[env + "lx_" + k] = s.robots[r][0];
-    parameters[env + "ly_" + k] = s.robots[r][1];
-    parameters[robot + "initial_position[0]"] = s.robots[r][0];
-    parameters[robot + "initial_position[1]"] = s.robots[r][1];
-    for (const ex::IntocpsBodyParameter& d : ex::intocps_body_parameters())
-      if (d.initial_position_index < 0 || d.initial_position_index == 2) {
-        const double v = ex::intocps_parameter_value(s.body.intocps, d);
-        if (v != ex::intocps_parameter_value(ex::IntocpsBodyParams{}, d)) parameters[robot + std::string(d.name)] = v;
-      }
-  }
-  connections[env + "onDestinationOutput"] = told;
-  mm["connections"] = connections;
-  parameters[env + "mapSize"] = s.map_size;
-  parameters[env + "nRobots"] = static_cast<int32_t>(n);
-  parameters[env + "nObstacles"] = static_cast<int32_t>(s.obstacles.size());
-  for (std::size_t k = 0; k < s.obstacles.size(); ++k) {
-    parameters[env + "ox_" + std::to_string(k + 1)] = s.obstacles[k][0];
-    parameters[env + "oy_" + std::to_string(k + 1)] = s.obstacles[k][1];
-  }
-  mm["parameters"] = parameters;
+  const std::string mm = thesis_multimodel(s, {"Environment.fmu", "UController.fmu", "", bodies});
   // The published coe.json's keys, with this run's end.
-  Json coe;
+  json_io::Json coe;
   coe["startTime"] = 0;
   coe["endTime"] = *end_time_s;
   coe["multimodel_path"] = "Multi-models/mm-new/mm.json";
-  coe["algorithm"] = Json::object({{"type", "fixed-step"}, {"size", s.params.step_size}});
+  coe["algorithm"] = json_io::Json::object({{"type", "fixed-step"}, {"size", s.params.step_size}});
   coe["liveGraphColumns"] = 1;
   coe["liveGraphVisibleRowCount"] = 1;
-  coe["graphs"] = Json::array();
+  coe["graphs"] = json_io::Json::array();
   coe["livestreamInterval"] = 0;
-  coe["logVariables"] = Json::object();
+  coe["logVariables"] = json_io::Json::object();
   coe["visible"] = false;
   coe["loggingOn"] = false;
   coe["overrideLogLevel"] = nullptr;
@@ -325,7 +412,7 @@ ThesisProject write_intocps_thesis(const ex::Scenario& scenario, const std::stri
   coe["global_relative_tolerance"] = 0.01;
   coe["simulationProgramDelay"] = true;
   io::write_file_atomically(p.config, coe.dump(2) + "\n");
-  io::write_file_atomically(p.multimodel, mm.dump(2) + "\n");
+  io::write_file_atomically(p.multimodel, mm);
   return p;
 }
 

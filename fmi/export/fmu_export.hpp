@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "fmi/fmu/component.hpp"
 #include "spec/exploration/types.hpp"
@@ -31,11 +32,32 @@ FmuSetup fmu_setup(Kind kind, const exploration::Scenario& s, Interface interfac
 
 // The bytes of the .fmu archive.
 std::string fmu_archive(const FmuSetup& setup);
+// The same with another build of the FMUs' library (tests: a library with a fault built in).
+std::string fmu_archive(const FmuSetup& setup, const std::string& library);
 
 // Writes the archive to `path` atomically.
 void write_fmu(const FmuSetup& setup, const std::string& path);
 
 enum class Handshake { flag, epoch };
+
+// The FMU files a multi-model names (as written in it: relative to it, or absolute). The thesis
+// layout's bodies are one file per robot (`bodies`, else `body` for every robot).
+struct ModelFmus {
+  std::string environment, controller, body;
+  std::vector<std::string> bodies = {};
+};
+
+// The thesis's architecture for scenario s as an INTO-CPS multi-model (JSON text): one
+// Environment, one Controller and one Body instance per robot, connected as the thesis's FMUs are,
+// with the scenario's start positions and handshake as parameters (swarmcheck's interface).
+// every_parameter: also every parameter the scenario decides (the Environment's, every gain and
+// body parameter), so that FMUs of any start values run s (conform --fmu's cases).
+std::string intocps_multimodel(const exploration::Scenario& s, Handshake handshake, const ModelFmus& files,
+                               bool every_parameter = false);
+// The same in the thesis interface, laid out as thesis A's published mm.json (write_intocps_thesis).
+std::string thesis_multimodel(const exploration::Scenario& s, const ModelFmus& files, bool every_parameter = false);
+// An INTO-CPS configuration: fixed step step_s from 0 to end_s.
+std::string intocps_config(double step_s, double end_s);
 
 // The thesis's architecture in `dir` (created if missing): Environment.fmu, Controller.fmu,
 // Body.fmu, multimodel.json (one Environment, one Controller and one Body instance per robot,
