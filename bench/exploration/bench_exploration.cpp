@@ -57,6 +57,23 @@ Scenario bench_scenario(Mode mode, int32_t robots, int32_t map_size) {
   return s;
 }
 
+ExplorationOptions one_thread() {
+  ExplorationOptions o;
+  o.threads = 1;
+  return o;
+}
+
+template <class Sim>
+void run_steps(benchmark::State& state, Sim& sim, const Scenario& s) {
+  for (auto _ : state) sim.step();
+  const double steps = static_cast<double>(state.iterations());
+  state.counters["steps_per_s"] = benchmark::Counter(steps, benchmark::Counter::kIsRate);
+  state.counters["decisions_per_s"] =
+      benchmark::Counter(s.mode == Mode::abstract ? steps * static_cast<double>(s.robots.size()) : 0.0,
+                         benchmark::Counter::kIsRate);
+  state.counters["x_realtime"] = benchmark::Counter(steps * s.params.step_size, benchmark::Counter::kIsRate);
+}
+
 // The published robot: cosim with the 20-sim body (100 RK4 steps a robot a master step) and
 // the swarmcheck controller.
 Scenario intocps_scenario(int32_t robots, int32_t map_size) {
@@ -80,23 +97,6 @@ void bench_intocps_model(benchmark::State& state, int32_t robots, int32_t map) {
   const Scenario s = intocps_scenario(robots, map);
   auto m = std::make_unique<swarmcheck::model::exploration::ExplorationModel>(s);
   run_steps(state, *m, s);
-}
-
-ExplorationOptions one_thread() {
-  ExplorationOptions o;
-  o.threads = 1;
-  return o;
-}
-
-template <class Sim>
-void run_steps(benchmark::State& state, Sim& sim, const Scenario& s) {
-  for (auto _ : state) sim.step();
-  const double steps = static_cast<double>(state.iterations());
-  state.counters["steps_per_s"] = benchmark::Counter(steps, benchmark::Counter::kIsRate);
-  state.counters["decisions_per_s"] =
-      benchmark::Counter(s.mode == Mode::abstract ? steps * static_cast<double>(s.robots.size()) : 0.0,
-                         benchmark::Counter::kIsRate);
-  state.counters["x_realtime"] = benchmark::Counter(steps * s.params.step_size, benchmark::Counter::kIsRate);
 }
 
 void bench_impl1(benchmark::State& state, Mode mode, int32_t robots, int32_t map) {

@@ -77,7 +77,7 @@ Loop identify(const FmuConformOptions& o, const fs::path& scratch) {
     if (end.how == ChildEnd::How::threw) throw InputError("--fmu", end.output);
     throw InputError("--fmu", "loading the FMUs: " + end.describe());
   }
-  const Json j = Json::parse(end.output);
+  const Json j = json_io::parse_json_text(end.output, "the FMUs' description (from a child process)");
   Loop loop{j["environment"].get<std::string>(), j["controller"].get<std::string>(), j["body"].get<std::string>(),
             j["robots"].get<int>(), j["obstacles"].get<int>()};
   if (loop.robots < 1) throw InputError(o.environment, "the Environment FMU has no robots (no xDesired1 output)");
@@ -224,7 +224,7 @@ std::string outcome_text(const std::optional<FmuDivergence>& d) {
 
 std::optional<FmuDivergence> read_outcome(const std::string& text) {
   if (text == "agree") return std::nullopt;
-  const Json j = Json::parse(text);
+  const Json j = json_io::parse_json_text(text, "a case's outcome (from a child process)");
   return FmuDivergence{j["step"].get<int64_t>(), j["variable"].get<std::string>(),
                        std::bit_cast<double>(j["model"].get<uint64_t>()), std::bit_cast<double>(j["fmu"].get<uint64_t>()), ""};
 }
