@@ -54,9 +54,13 @@ def test_the_stubs_declare_every_name_of_the_extension_and_nothing_else():
 
 def test_the_installed_package_imports_from_its_prefix(tmp_path):
     build = os.path.dirname(os.path.dirname(os.path.dirname(_swarmcheck.__file__)))
-    subprocess.run(["cmake", "--install", build, "--prefix", tmp_path, "--component", "Unspecified"],
+    subprocess.run(["cmake", "--install", build, "--prefix", tmp_path, "--component", "python"],
                    check=True, capture_output=True)
     site = tmp_path / "lib" / "python3" / "dist-packages"
+    installed = sorted(str(p.relative_to(site)) for p in site.rglob("*") if p.is_file())
+    assert [f for f in installed if not f.startswith("swarmcheck/_swarmcheck.cpython")] == \
+        ["swarmcheck/__init__.py", "swarmcheck/_swarmcheck.pyi", "swarmcheck/py.typed"]
+    assert len(installed) == 4
     env = dict(os.environ, PYTHONPATH=str(site))
     out = subprocess.run([sys.executable, "-c", "import swarmcheck; print(swarmcheck.__file__); "
                           "print(swarmcheck.run(mode='abstract')['outcome'])"],
