@@ -291,7 +291,7 @@ void write_counterexample(const FmuCounterexample& cx, const Loop& loop, const F
       "Replay it in swarmcheck's master (or any INTO-CPS-style master: multimodel.json names the FMU files):\n"
       "  swarmcheck cosim {}/multimodel.json --config {}/coe.json -o outputs.csv\n"
       "The model's run of the same case (the library's `run` is the model bit for bit):\n"
-      "  swarmcheck run --scenario {}/scenario.json --json\n",
+      "  swarmcheck run {}/scenario.json --json\n",
       cx.divergence.describe(), cx.folder, cx.folder, cx.folder);
   io::write_file_atomically((dir / "README.txt").string(), readme);
 }

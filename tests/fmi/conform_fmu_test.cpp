@@ -124,6 +124,9 @@ TEST(ConformFmu, ACatalogueFaultInTheEnvironmentFmuIsCaughtAndItsCounterexampleF
   // Minimal: the counterexample's case is no bigger than it has to be in its robots and obstacles
   // (fixed by the FMU) and ran to the divergence only.
   EXPECT_LE(cx.divergence.step, s.max_steps);
+  // The README's commands run as they are: the model's side of the case.
+  const auto run = swarmcheck::testing::run_binary(SWARMCHECK_BIN, "run " + cx.folder + "/scenario.json --json");
+  EXPECT_EQ(run.status, 0) << run.out;
   fs::remove_all(e.dir);
 }
 
