@@ -13,6 +13,7 @@
 
 #include "conformance/common/campaign.hpp"
 #include "conformance/common/child_process.hpp"
+#include "conformance/fmu/component_conform.hpp"
 #include "fmi/export/fmu_export.hpp"
 #include "fmi/master/fmu_library.hpp"
 #include "fmi/master/master.hpp"
@@ -32,19 +33,22 @@ namespace fm = swarmcheck::fmi::master;
 namespace fs = std::filesystem;
 using json_io::Json;
 
-// The three FMU files in their roles, and what the Environment declares.
+// The FMU files in their roles (absolute paths; empty: not given), and what the Environment declares.
 struct Loop {
-  std::string environment, controller, body;   // absolute paths
+  std::string environment, controller, body;
   int robots = 0, obstacles = 0;
 };
 
 // Which file is which (by the variables each has: eP, servoLeft, robot_x) and the Environment's
 // robot and obstacle counts, read in a child process: loading someone's library may crash.
 Loop identify(const FmuConformOptions& o, const fs::path& scratch) {
-  const std::vector<std::string> files{o.environment, o.controller, o.body};
+  std::vector<std::string> files;
+  for (const std::string& f : {o.environment, o.controller, o.body})
+    if (!f.empty()) files.push_back(f);
+  if (files.size() != 1 && files.size() != 3)
+    throw InputError("--fmu", "give one Controller or Body FMU, or the Environment, Controller and Body (three --fmu FILE)");
   for (const std::string& f : files) {
     std::error_code ec;
-    if (f.empty()) throw InputError("--fmu", "give the Environment, Controller and Body FMUs (three --fmu FILE)");
     if (!fs::is_regular_file(f, ec)) throw InputError(f, "no such FMU file");
   }
   const ChildEnd end = run_in_child([&](CaseProgress&) {
@@ -78,9 +82,12 @@ Loop identify(const FmuConformOptions& o, const fs::path& scratch) {
     throw InputError("--fmu", "loading the FMUs: " + end.describe());
   }
   const Json j = json_io::parse_json_text(end.output, "the FMUs' description (from a child process)");
-  Loop loop{j["environment"].get<std::string>(), j["controller"].get<std::string>(), j["body"].get<std::string>(),
-            j["robots"].get<int>(), j["obstacles"].get<int>()};
-  if (loop.robots < 1) throw InputError(o.environment, "the Environment FMU has no robots (no xDesired1 output)");
+  Loop loop{j.value("environment", ""), j.value("controller", ""), j.value("body", ""), j.value("robots", 0),
+            j.value("obstacles", 0)};
+  if (files.size() == 1 && !loop.environment.empty())
+    throw InputError(loop.environment, "an Environment FMU alone cannot be checked: give its Controller and Body FMUs too");
+  if (!loop.environment.empty() && loop.robots < 1)
+    throw InputError(loop.environment, "the Environment FMU has no robots (no xDesired1 output)");
   return loop;
 }
 
@@ -311,6 +318,12 @@ FmuConformReport run_fmu_conform(const FmuConformOptions& o) {
     throw InputError("--tolerance", "expected numbers >= 0");
   const CaseFolder work;
   const Loop loop = identify(o, work.dir / "identify");
+  if (loop.environment.empty()) {   // one Controller or Body FMU alone
+    const fs::path scratch = work.dir / "component";
+    fs::create_directories(scratch);
+    return loop.body.empty() ? run_component_conform(o, loop.controller, ComponentRole::controller, scratch.string())
+                             : run_component_conform(o, loop.body, ComponentRole::body, scratch.string());
+  }
   FmuConformReport report;
   report.robots = loop.robots;
   report.obstacles = loop.obstacles;

@@ -1,6 +1,7 @@
 #pragma once
 // `swarmcheck conform --fmu`: anyone's FMUs of system A (an Environment, a Controller and a Body
-// that form the thesis's loop) checked against swarmcheck's model in lock-step on generated cases.
+// that form the thesis's loop, or a Controller or a Body alone: component_conform.hpp) checked
+// against swarmcheck's model in lock-step on generated cases.
 // Each case is a scenario with the robot and obstacle counts the Environment FMU declares (its
 // xDesired{i} outputs and ox_{k} parameters); it is written as an INTO-CPS multi-model naming the
 // user's FMU files, with every parameter the scenario decides, and run by swarmcheck's master
@@ -64,7 +65,8 @@ struct FmuCounterexample {
 };
 
 struct FmuConformReport {
-  int robots = 0, obstacles = 0;   // what the Environment FMU declares
+  std::string checked = "loop";    // "loop" (Environment, Controller, Body), "controller" or "body" alone
+  int robots = 0, obstacles = 0;   // what the Environment FMU declares (the loop)
   int cases_run = 0;
   std::optional<FmuCounterexample> counterexample;
 };
