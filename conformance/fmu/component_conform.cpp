@@ -201,12 +201,6 @@ void set_parameters(Driven& d, const ComponentCase& c, ComponentRole role) {
   d.set("half_axle", rp.half_axle_m);
 }
 
-bool same(double model, double fmu, const Tolerance& t) {
-  if (t.bits()) return std::bit_cast<uint64_t>(model) == std::bit_cast<uint64_t>(fmu);
-  if (std::isnan(model) || std::isnan(fmu)) return std::isnan(model) && std::isnan(fmu);
-  return std::fabs(fmu - model) <= t.absolute + t.relative * std::fabs(model);
-}
-
 // In the child: the FMU through the case, compared step by step with `expected`.
 std::optional<FmuDivergence> drive(const std::string& fmu, const ComponentCase& c, ComponentRole role,
                                    const Expected& expected, const Tolerance& tolerance, CaseProgress& p) {
@@ -234,7 +228,7 @@ std::optional<FmuDivergence> drive(const std::string& fmu, const ComponentCase& 
     t = t + c.s.params.step_size;
     for (std::size_t v = 0; v < expected.names.size(); ++v) {
       const double got = d.get(expected.names[v]);
-      if (!same(expected.rows[k][v], got, tolerance))
+      if (!tolerance.accepts(expected.rows[k][v], got))
         return FmuDivergence{static_cast<int64_t>(k + 1), expected.names[v], expected.rows[k][v], got, ""};
     }
   }

@@ -166,12 +166,6 @@ void write_case(const ex::Scenario& s, const Loop& loop, FmuInterface i, const f
   io::write_file_atomically((dir / "scenario.json").string(), json_io::to_json(s).dump(2) + "\n");
 }
 
-bool equal(double model, double fmu, const Tolerance& t) {
-  if (t.bits()) return std::bit_cast<uint64_t>(model) == std::bit_cast<uint64_t>(fmu);
-  if (std::isnan(model) || std::isnan(fmu)) return std::isnan(model) && std::isnan(fmu);
-  return std::fabs(fmu - model) <= t.absolute + t.relative * std::fabs(model);
-}
-
 // One case in this (child) process: the master over the FMUs and the model, step by step; the
 // first difference, or nothing.
 std::optional<FmuDivergence> lockstep(const ex::Scenario& s, const fs::path& dir, const FmuConformOptions& o,
@@ -205,7 +199,7 @@ std::optional<FmuDivergence> lockstep(const ex::Scenario& s, const fs::path& dir
     const auto check = [&](double expected) -> std::optional<FmuDivergence> {
       const Compared& c = ports[k++];
       const double got = master.value(c.port);
-      if (equal(expected, got, o.tolerance)) return std::nullopt;
+      if (o.tolerance.accepts(expected, got)) return std::nullopt;
       return FmuDivergence{step, c.name, expected, got, ""};
     };
     for (const ex::RobotRecord& r : rec.robots) {
@@ -304,6 +298,12 @@ void write_counterexample(const FmuCounterexample& cx, const Loop& loop, const F
 }
 
 }  // namespace
+
+bool Tolerance::accepts(double model, double fmu) const {
+  if (bits()) return std::bit_cast<uint64_t>(model) == std::bit_cast<uint64_t>(fmu);
+  if (std::isnan(model) || std::isnan(fmu)) return std::isnan(model) && std::isnan(fmu);
+  return std::fabs(fmu - model) <= absolute + relative * std::fabs(model);
+}
 
 std::string FmuDivergence::describe() const {
   if (!abnormal_end.empty()) return abnormal_end;

@@ -31,6 +31,8 @@ struct Tolerance {
   double absolute = 0.0;
   double relative = 0.0;
   bool bits() const { return absolute == 0.0 && relative == 0.0; }
+  // Whether the FMU's value counts as the model's (NaN equals NaN only).
+  bool accepts(double model, double fmu) const;
 };
 
 struct FmuConformOptions {

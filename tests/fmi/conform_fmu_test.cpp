@@ -6,6 +6,7 @@
 #include <stdlib.h>
 
 #include <bit>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -252,4 +253,17 @@ TEST(ConformFmu, ABodyFmuAloneThatCrashesAtItsSeventhStepShrinksToASevenStepCase
   EXPECT_EQ(c["servos"].size(), 7u);   // each case runs in a fresh process: the seventh step of the case
   EXPECT_TRUE(fs::exists(r.counterexample->folder + "/expected.csv"));
   fs::remove_all(e.dir);
+}
+
+TEST(ConformFmu, ATolerancesAcceptsWithinAbsolutePlusRelativeAndBitsOtherwise) {
+  const cf::Tolerance bits;
+  EXPECT_TRUE(bits.accepts(0.1, 0.1));
+  EXPECT_FALSE(bits.accepts(0.0, -0.0));   // bits: -0.0 is not 0.0
+  EXPECT_FALSE(bits.accepts(1.0, std::nextafter(1.0, 2.0)));
+  const cf::Tolerance loose{1e-9, 1e-6};
+  EXPECT_TRUE(loose.accepts(0.0, -0.0));
+  EXPECT_TRUE(loose.accepts(1000.0, 1000.0 + 1e-3 + 1e-9 / 2));
+  EXPECT_FALSE(loose.accepts(1000.0, 1000.0 + 2e-3));
+  EXPECT_TRUE(loose.accepts(std::nan(""), std::nan("")));
+  EXPECT_FALSE(loose.accepts(1.0, std::nan("")));
 }
