@@ -87,7 +87,11 @@ function(swarmcheck_fault_files fault_file out_var)
   set(${out_var} ${files} PARENT_SCOPE)
 endfunction()
 
-function(swarmcheck_fault_variant variant target fault_file)
+# swarmcheck_fault_rewrite(variant fault_file): the command that writes the fault's rewritten copies
+# under ${CMAKE_BINARY_DIR}/faults/<variant>; sets, in the caller, fault_root (that folder),
+# fault_files (the files it rewrites, relative to the source root), fault_rewritten (the copies)
+# and fault_header_rewritten (ON if a header is among them). Used here and by fmi/'s FMU variants.
+function(swarmcheck_fault_rewrite variant fault_file)
   get_filename_component(fault_file ${fault_file} ABSOLUTE)
   swarmcheck_fault_files(${fault_file} files)
   set(root ${CMAKE_BINARY_DIR}/faults/${variant})
@@ -105,6 +109,19 @@ function(swarmcheck_fault_variant variant target fault_file)
     COMMAND ${CMAKE_SOURCE_DIR}/scripts/apply-fault ${fault_file} ${CMAKE_SOURCE_DIR} ${root}
     DEPENDS ${fault_file} ${CMAKE_SOURCE_DIR}/scripts/apply-fault ${files_abs}
     COMMENT "fault ${variant}: rewriting ${files}" VERBATIM)
+  set(fault_root ${root} PARENT_SCOPE)
+  set(fault_files ${files} PARENT_SCOPE)
+  set(fault_rewritten ${rewritten} PARENT_SCOPE)
+  set(fault_header_rewritten ${header_rewritten} PARENT_SCOPE)
+endfunction()
+
+function(swarmcheck_fault_variant variant target fault_file)
+  get_filename_component(fault_file ${fault_file} ABSOLUTE)
+  swarmcheck_fault_rewrite(${variant} ${fault_file})
+  set(root ${fault_root})
+  set(files ${fault_files})
+  set(rewritten ${fault_rewritten})
+  set(header_rewritten ${fault_header_rewritten})
   get_target_property(sources ${target} SWARMCHECK_FAULTABLE_SOURCES)
   get_target_property(fixed ${target} SWARMCHECK_FAULTABLE_FIXED)
   get_target_property(link ${target} SWARMCHECK_FAULTABLE_LINK)

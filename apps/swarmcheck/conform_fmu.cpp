@@ -18,9 +18,10 @@ namespace cf = swarmcheck::conformance::fmu;
 
 void add_conform_fmu_options(CLI::App* cmd, ConformFmuArgs& a) {
   cmd->add_option("--fmu", a.fmus,
-                  "An FMU of your own to check against the model: give the Environment, the Controller and the Body "
-                  "(three --fmu FILE, any order: they are told apart by their variables). Cases have the Environment's "
-                  "robot and obstacle counts; every output is compared every step")
+                  "An FMU of your own to check against the model: a Controller or a Body alone (driven with generated "
+                  "inputs), or the Environment, the Controller and the Body (three --fmu FILE, any order: they are told "
+                  "apart by their variables; cases have the Environment's robot and obstacle counts). Every output is "
+                  "compared every step")
       ->take_all();
   cmd->add_option("--interface", a.interface,
                   "With --fmu: whose variable names the FMUs have: swarmcheck | thesis (thesis A's published FMUs')")
@@ -37,11 +38,14 @@ void add_conform_fmu_options(CLI::App* cmd, ConformFmuArgs& a) {
 int conform_fmu(const ConformFmuArgs& a, int cases, bool cases_given, uint64_t seed, int64_t max_steps,
                 const std::string& out_dir, double case_time_limit_s, bool json) {
   cf::FmuConformOptions o;
-  if (a.fmus.size() != 3)
-    throw InputError("--fmu", "expected three FMUs (Environment, Controller, Body), got " + std::to_string(a.fmus.size()));
-  o.environment = a.fmus[0];
-  o.controller = a.fmus[1];
-  o.body = a.fmus[2];
+  if (a.fmus.size() != 1 && a.fmus.size() != 3)
+    throw InputError("--fmu", "expected one FMU (a Controller or a Body) or three (Environment, Controller, Body), got " +
+                                  std::to_string(a.fmus.size()));
+  o.environment = a.fmus[0];   // the roles are read from the files' variables
+  if (a.fmus.size() == 3) {
+    o.controller = a.fmus[1];
+    o.body = a.fmus[2];
+  }
   o.interface = a.interface == "thesis" ? cf::FmuInterface::thesis : cf::FmuInterface::swarmcheck;
   ex::ScenarioOverrides over;
   apply_robot_choices(a.robots, a.rule, over);
@@ -67,6 +71,7 @@ int conform_fmu(const ConformFmuArgs& a, int cases, bool cases_given, uint64_t s
   if (json) {
     nlohmann::ordered_json j;
     j["system"] = "fmu";
+    j["checked"] = r.checked;
     j["robots"] = r.robots;
     j["obstacles"] = r.obstacles;
     j["interface"] = a.interface;
@@ -83,13 +88,26 @@ int conform_fmu(const ConformFmuArgs& a, int cases, bool cases_given, uint64_t s
     fmt::print("{}\n", j.dump());
     return r.counterexample ? 1 : 0;
   }
-  fmt::print("conform --fmu: Environment of {} robots and {} obstacle cells, {} interface; model: {}; compared {}\n",
-             r.robots, r.obstacles, a.interface, model, compared);
+  if (r.checked == "loop")
+    fmt::print("conform --fmu: Environment of {} robots and {} obstacle cells, {} interface; model: {}; compared {}\n",
+               r.robots, r.obstacles, a.interface, model, compared);
+  else
+    fmt::print("conform --fmu: a {} FMU alone, driven with generated inputs; model: the {} {}; compared {}\n", r.checked,
+               r.checked == "body" ? json_io::enum_to_string(o.body_kind) : json_io::enum_to_string(o.controller_law),
+               r.checked, compared);
   if (!r.counterexample) {
     fmt::print("conform --fmu: {} cases agree (seed {})\n", r.cases_run, seed);
     return 0;
   }
   const cf::FmuCounterexample& cx = *r.counterexample;
+  if (r.checked != "loop") {
+    fmt::print("conform --fmu: case {} differs; shrunk {} times\n", r.cases_run, cx.shrinks);
+    fmt::print("  {}\n", cx.divergence.describe());
+    fmt::print("  counterexample: {}/ (case.json: the parameters and the inputs of each step; expected.csv: the model's "
+               "outputs; divergence.json)\n",
+               cx.folder);
+    return 1;
+  }
   fmt::print("conform --fmu: case {} differs; shrunk {} times to: map {}, {} robots, {} obstacles, rule {}, {} steps\n",
              r.cases_run, cx.shrinks, cx.minimal.map_size, cx.minimal.robots.size(), cx.minimal.obstacles.size(),
              json_io::enum_to_string(cx.minimal.rule), cx.minimal.max_steps);

@@ -13,6 +13,7 @@
 
 #include "conformance/common/campaign.hpp"
 #include "conformance/common/child_process.hpp"
+#include "conformance/fmu/component_conform.hpp"
 #include "fmi/export/fmu_export.hpp"
 #include "fmi/master/fmu_library.hpp"
 #include "fmi/master/master.hpp"
@@ -32,19 +33,22 @@ namespace fm = swarmcheck::fmi::master;
 namespace fs = std::filesystem;
 using json_io::Json;
 
-// The three FMU files in their roles, and what the Environment declares.
+// The FMU files in their roles (absolute paths; empty: not given), and what the Environment declares.
 struct Loop {
-  std::string environment, controller, body;   // absolute paths
+  std::string environment, controller, body;
   int robots = 0, obstacles = 0;
 };
 
 // Which file is which (by the variables each has: eP, servoLeft, robot_x) and the Environment's
 // robot and obstacle counts, read in a child process: loading someone's library may crash.
 Loop identify(const FmuConformOptions& o, const fs::path& scratch) {
-  const std::vector<std::string> files{o.environment, o.controller, o.body};
+  std::vector<std::string> files;
+  for (const std::string& f : {o.environment, o.controller, o.body})
+    if (!f.empty()) files.push_back(f);
+  if (files.size() != 1 && files.size() != 3)
+    throw InputError("--fmu", "give one Controller or Body FMU, or the Environment, Controller and Body (three --fmu FILE)");
   for (const std::string& f : files) {
     std::error_code ec;
-    if (f.empty()) throw InputError("--fmu", "give the Environment, Controller and Body FMUs (three --fmu FILE)");
     if (!fs::is_regular_file(f, ec)) throw InputError(f, "no such FMU file");
   }
   const ChildEnd end = run_in_child([&](CaseProgress&) {
@@ -78,9 +82,12 @@ Loop identify(const FmuConformOptions& o, const fs::path& scratch) {
     throw InputError("--fmu", "loading the FMUs: " + end.describe());
   }
   const Json j = json_io::parse_json_text(end.output, "the FMUs' description (from a child process)");
-  Loop loop{j["environment"].get<std::string>(), j["controller"].get<std::string>(), j["body"].get<std::string>(),
-            j["robots"].get<int>(), j["obstacles"].get<int>()};
-  if (loop.robots < 1) throw InputError(o.environment, "the Environment FMU has no robots (no xDesired1 output)");
+  Loop loop{j.value("environment", ""), j.value("controller", ""), j.value("body", ""), j.value("robots", 0),
+            j.value("obstacles", 0)};
+  if (files.size() == 1 && !loop.environment.empty())
+    throw InputError(loop.environment, "an Environment FMU alone cannot be checked: give its Controller and Body FMUs too");
+  if (!loop.environment.empty() && loop.robots < 1)
+    throw InputError(loop.environment, "the Environment FMU has no robots (no xDesired1 output)");
   return loop;
 }
 
@@ -159,12 +166,6 @@ void write_case(const ex::Scenario& s, const Loop& loop, FmuInterface i, const f
   io::write_file_atomically((dir / "scenario.json").string(), json_io::to_json(s).dump(2) + "\n");
 }
 
-bool equal(double model, double fmu, const Tolerance& t) {
-  if (t.bits()) return std::bit_cast<uint64_t>(model) == std::bit_cast<uint64_t>(fmu);
-  if (std::isnan(model) || std::isnan(fmu)) return std::isnan(model) && std::isnan(fmu);
-  return std::fabs(fmu - model) <= t.absolute + t.relative * std::fabs(model);
-}
-
 // One case in this (child) process: the master over the FMUs and the model, step by step; the
 // first difference, or nothing.
 std::optional<FmuDivergence> lockstep(const ex::Scenario& s, const fs::path& dir, const FmuConformOptions& o,
@@ -198,7 +199,7 @@ std::optional<FmuDivergence> lockstep(const ex::Scenario& s, const fs::path& dir
     const auto check = [&](double expected) -> std::optional<FmuDivergence> {
       const Compared& c = ports[k++];
       const double got = master.value(c.port);
-      if (equal(expected, got, o.tolerance)) return std::nullopt;
+      if (o.tolerance.accepts(expected, got)) return std::nullopt;
       return FmuDivergence{step, c.name, expected, got, ""};
     };
     for (const ex::RobotRecord& r : rec.robots) {
@@ -291,12 +292,18 @@ void write_counterexample(const FmuCounterexample& cx, const Loop& loop, const F
       "Replay it in swarmcheck's master (or any INTO-CPS-style master: multimodel.json names the FMU files):\n"
       "  swarmcheck cosim {}/multimodel.json --config {}/coe.json -o outputs.csv\n"
       "The model's run of the same case (the library's `run` is the model bit for bit):\n"
-      "  swarmcheck run --scenario {}/scenario.json --json\n",
+      "  swarmcheck run {}/scenario.json --json\n",
       cx.divergence.describe(), cx.folder, cx.folder, cx.folder);
   io::write_file_atomically((dir / "README.txt").string(), readme);
 }
 
 }  // namespace
+
+bool Tolerance::accepts(double model, double fmu) const {
+  if (bits()) return std::bit_cast<uint64_t>(model) == std::bit_cast<uint64_t>(fmu);
+  if (std::isnan(model) || std::isnan(fmu)) return std::isnan(model) && std::isnan(fmu);
+  return std::fabs(fmu - model) <= absolute + relative * std::fabs(model);
+}
 
 std::string FmuDivergence::describe() const {
   if (!abnormal_end.empty()) return abnormal_end;
@@ -311,6 +318,12 @@ FmuConformReport run_fmu_conform(const FmuConformOptions& o) {
     throw InputError("--tolerance", "expected numbers >= 0");
   const CaseFolder work;
   const Loop loop = identify(o, work.dir / "identify");
+  if (loop.environment.empty()) {   // one Controller or Body FMU alone
+    const fs::path scratch = work.dir / "component";
+    fs::create_directories(scratch);
+    return loop.body.empty() ? run_component_conform(o, loop.controller, ComponentRole::controller, scratch.string())
+                             : run_component_conform(o, loop.body, ComponentRole::body, scratch.string());
+  }
   FmuConformReport report;
   report.robots = loop.robots;
   report.obstacles = loop.obstacles;

@@ -1,6 +1,7 @@
 #pragma once
 // `swarmcheck conform --fmu`: anyone's FMUs of system A (an Environment, a Controller and a Body
-// that form the thesis's loop) checked against swarmcheck's model in lock-step on generated cases.
+// that form the thesis's loop, or a Controller or a Body alone: component_conform.hpp) checked
+// against swarmcheck's model in lock-step on generated cases.
 // Each case is a scenario with the robot and obstacle counts the Environment FMU declares (its
 // xDesired{i} outputs and ox_{k} parameters); it is written as an INTO-CPS multi-model naming the
 // user's FMU files, with every parameter the scenario decides, and run by swarmcheck's master
@@ -30,6 +31,8 @@ struct Tolerance {
   double absolute = 0.0;
   double relative = 0.0;
   bool bits() const { return absolute == 0.0 && relative == 0.0; }
+  // Whether the FMU's value counts as the model's (NaN equals NaN only).
+  bool accepts(double model, double fmu) const;
 };
 
 struct FmuConformOptions {
@@ -64,7 +67,8 @@ struct FmuCounterexample {
 };
 
 struct FmuConformReport {
-  int robots = 0, obstacles = 0;   // what the Environment FMU declares
+  std::string checked = "loop";    // "loop" (Environment, Controller, Body), "controller" or "body" alone
+  int robots = 0, obstacles = 0;   // what the Environment FMU declares (the loop)
   int cases_run = 0;
   std::optional<FmuCounterexample> counterexample;
 };

@@ -132,6 +132,37 @@ std::optional<z3::model> out_of_range(Session& session, const sym::Real& left, c
   return std::nullopt;
 }
 
+// The executed drive_rule over a fixed grid of states and inputs (both maneuvers, headings round
+// the circle, deltas from 0 to 1e6, steps 0.1 and 0.5): an input on which it leaves [-1, 1] is a
+// counterexample by execution. Finding none concludes nothing: the queries below decide.
+std::optional<ConcreteController> search_drive_rule(const exploration::RobotParams& rp) {
+  const exploration::ControllerParamsT<C> p = exploration::controller_params(rp);
+  constexpr double kQuarter = 0.78539816339744828;
+  const double headings[] = {0.0, kQuarter, -kQuarter, 2 * kQuarter, -2 * kQuarter, 3 * kQuarter, -3 * kQuarter,
+                             4 * kQuarter, 1e-3, -1e-3};
+  const double deltas[] = {0.0, 1e-3, -1e-3, 0.04, -0.04, 0.3, -0.3, 2.0, -2.0, 50.0, -50.0, 1e6, -1e6};
+  const double angles[] = {0.0, 1.0, -2.0};
+  for (const bool driving : {false, true})
+    for (const double theta : headings)
+      for (const double dx : deltas)
+        for (const double dy : deltas)
+          for (const double beta : angles)
+            for (const double target : angles)
+              for (const double step : {0.1, 0.5}) {
+                const exploration::ControllerCoreT<C> core{false, driving, beta, 0.0, 0.0, target};
+                const exploration::DriveT<C> out =
+                    exploration::drive_rule<C>(p, core, {0.0, 0.0, theta, dx, dy, false, step}, {dx, dy});
+                if (out.next.servo_left >= -1 && out.next.servo_left <= 1 && out.next.servo_right >= -1 &&
+                    out.next.servo_right <= 1)
+                  continue;
+                ConcreteController c;
+                c.state = {driving ? 2 : 1, 0, beta, 0.0, 0.0, target};
+                c.in = {{0.0, 0.0, theta}, {dx, dy}, 0, step};
+                return c;
+              }
+  return std::nullopt;
+}
+
 // The servo commands of any controller state and any inputs (doubles, NaN and infinities
 // included), through the spec's controller_rule (and, its moving maneuvers, drive_rule), are in
 // [-1, 1]. The previous commands are any doubles too: nothing is assumed of the state.
@@ -142,6 +173,23 @@ Outcome check_controller(Session& session) {
   Translator t(session, RealTheory::fp64);   // reads the model's inputs
   z3::check_result answer = z3::unknown;
   std::string reason;
+  // First the executed drive_rule over a grid of inputs (milliseconds): an input it takes out of
+  // the range is a counterexample by execution, which the exact query over free doubles may not
+  // reach within the resource limit (a square root and several products: it did not, for a
+  // right servo left unsaturated).
+  if (const auto found = search_drive_rule(rp)) {
+    const exploration::ControllerCoreT<C> core{false, found->state.maneuver == 2, found->state.beta_rad, 0.0, 0.0,
+                                               found->state.target_theta_rad};
+    const exploration::DriveT<C> out = exploration::drive_rule<C>(
+        exploration::controller_params(rp), core,
+        {0.0, 0.0, found->in.pose.theta_rad, found->in.waypoint[0], found->in.waypoint[1], false, found->in.step_s},
+        {found->in.waypoint[0], found->in.waypoint[1]});
+    return {Verdict::refuted,
+            fmt::format("drive_rule run on a grid of inputs: {} commands servo_left = {}, servo_right = {} (confirmed "
+                        "by running drive_rule: a counterexample by execution)",
+                        found->text(), out.next.servo_left, out.next.servo_right),
+            {}};
+  }
   // drive_rule: the maneuvers' commands, for any deltas.
   const exploration::DeltaT<S> d{f.in.x_desired_m - f.in.x_m, f.in.y_desired_m - f.in.y_m};
   const exploration::DriveT<S> drive = exploration::drive_rule<S>(p, f.state, f.in, d);

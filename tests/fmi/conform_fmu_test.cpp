@@ -6,6 +6,7 @@
 #include <stdlib.h>
 
 #include <bit>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -124,6 +125,9 @@ TEST(ConformFmu, ACatalogueFaultInTheEnvironmentFmuIsCaughtAndItsCounterexampleF
   // Minimal: the counterexample's case is no bigger than it has to be in its robots and obstacles
   // (fixed by the FMU) and ran to the divergence only.
   EXPECT_LE(cx.divergence.step, s.max_steps);
+  // The README's commands run as they are: the model's side of the case.
+  const auto run = swarmcheck::testing::run_binary(SWARMCHECK_BIN, "run " + cx.folder + "/scenario.json --json");
+  EXPECT_EQ(run.status, 0) << run.out;
   fs::remove_all(e.dir);
 }
 
@@ -184,4 +188,82 @@ TEST(ConformFmu, FilesThatAreNotTheLoopAreRefusedWithTheFileNamed) {
   o.body = (e.dir / "missing.fmu").string();
   EXPECT_THROW(cf::run_fmu_conform(o), InputError);
   fs::remove_all(e.dir);
+}
+
+// One FMU alone: each of swarmcheck's Controller and Body FMUs, in both interfaces, driven with
+// generated inputs, gives the spec's component step's outputs by bits.
+TEST(ConformFmu, AControllerOrBodyFmuAloneAgreesWithTheSpecsComponentOnGeneratedInputs) {
+  const auto dir = swarmcheck::testing::fmi_scratch("conform-fmu-alone");
+  exploration::Scenario preset = exploration::default_scenario();
+  preset.controller = exploration::ControllerKind::thesis;
+  preset.body.kind = exploration::BodyKind::intocps;
+  struct One {
+    std::string file;
+    fmi::FmuSetup setup;
+    exploration::ControllerKind law;
+    exploration::BodyKind body;
+  };
+  const exploration::Scenario s = exploration::default_scenario();
+  const std::vector<One> fmus{
+      {"Controller.fmu", fmi::fmu_setup(fmi::Kind::controller, s), exploration::ControllerKind::swarmcheck, exploration::BodyKind::kinematic},
+      {"Body.fmu", fmi::fmu_setup(fmi::Kind::body, s), exploration::ControllerKind::swarmcheck, exploration::BodyKind::kinematic},
+      {"UController.fmu", fmi::fmu_setup(fmi::Kind::controller, s, fmi::Interface::thesis), exploration::ControllerKind::thesis,
+       exploration::BodyKind::intocps},
+      {"Body_Block1.fmu", fmi::fmu_setup(fmi::Kind::body, s, fmi::Interface::thesis), exploration::ControllerKind::thesis,
+       exploration::BodyKind::intocps},
+      {"BodyIntocps.fmu", fmi::fmu_setup(fmi::Kind::body, preset), exploration::ControllerKind::thesis, exploration::BodyKind::intocps}};
+  for (const One& one : fmus) {
+    const std::string path = (dir / one.file).string();
+    fmi::write_fmu(one.setup, path);
+    cf::FmuConformOptions o;
+    o.environment = path;
+    o.controller_law = one.law;
+    o.body_kind = one.body;
+    o.cases = 40;
+    o.max_steps = 80;
+    o.out_dir = (dir / "out").string();
+    const cf::FmuConformReport r = cf::run_fmu_conform(o);
+    EXPECT_EQ(r.checked, one.setup.kind == fmi::Kind::body ? "body" : "controller") << one.file;
+    EXPECT_EQ(r.cases_run, 40) << one.file;
+    EXPECT_FALSE(r.counterexample.has_value()) << one.file << ": " << r.counterexample->divergence.describe();
+  }
+  // The model of the other controller differs at once: the campaign is not blind.
+  cf::FmuConformOptions o;
+  o.environment = (dir / "UController.fmu").string();
+  o.controller_law = exploration::ControllerKind::swarmcheck;
+  o.cases = 40;
+  o.out_dir = (dir / "out").string();
+  EXPECT_TRUE(cf::run_fmu_conform(o).counterexample.has_value());
+  fs::remove_all(dir);
+}
+
+TEST(ConformFmu, ABodyFmuAloneThatCrashesAtItsSeventhStepShrinksToASevenStepCase) {
+  const Exported e = export_loop("crash-alone", FMU_FAULT_BODY_CRASHES_AT_ITS_SEVENTH_STEP);
+  const OwnTmpdir tmp(e.dir / "tmp");
+  cf::FmuConformOptions o = options(e, 30);
+  o.environment = e.body;
+  o.controller.clear();
+  o.body.clear();
+  const cf::FmuConformReport r = cf::run_fmu_conform(o);
+  EXPECT_TRUE(tmp.empty());
+  ASSERT_TRUE(r.counterexample.has_value());
+  EXPECT_NE(r.counterexample->divergence.abnormal_end.find("crashed with SIGSEGV at step 7"), std::string::npos)
+      << r.counterexample->divergence.describe();
+  const auto c = nlohmann::json::parse(std::ifstream(r.counterexample->folder + "/case.json"));
+  EXPECT_EQ(c["servos"].size(), 7u);   // each case runs in a fresh process: the seventh step of the case
+  EXPECT_TRUE(fs::exists(r.counterexample->folder + "/expected.csv"));
+  fs::remove_all(e.dir);
+}
+
+TEST(ConformFmu, ATolerancesAcceptsWithinAbsolutePlusRelativeAndBitsOtherwise) {
+  const cf::Tolerance bits;
+  EXPECT_TRUE(bits.accepts(0.1, 0.1));
+  EXPECT_FALSE(bits.accepts(0.0, -0.0));   // bits: -0.0 is not 0.0
+  EXPECT_FALSE(bits.accepts(1.0, std::nextafter(1.0, 2.0)));
+  const cf::Tolerance loose{1e-9, 1e-6};
+  EXPECT_TRUE(loose.accepts(0.0, -0.0));
+  EXPECT_TRUE(loose.accepts(1000.0, 1000.0 + 1e-3 + 1e-9 / 2));
+  EXPECT_FALSE(loose.accepts(1000.0, 1000.0 + 2e-3));
+  EXPECT_TRUE(loose.accepts(std::nan(""), std::nan("")));
+  EXPECT_FALSE(loose.accepts(1.0, std::nan("")));
 }
